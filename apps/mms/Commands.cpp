@@ -1,0 +1,74 @@
+#include "Commands.h"
+
+#include <cstdio>
+#include <iostream>
+
+#include "check/PathChecker.h"
+#include "render/SvgRenderer.h"
+#include "scene/SceneIO.h"
+#include "util/AtomicFile.h"
+
+namespace mms::cli {
+
+namespace {
+const char* motionName(Motion m) { return m == Motion::Rigid ? "rigid" : "translate"; }
+
+std::string pose(const Pose& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%g, %g, %g)", p.x, p.y, p.theta);
+  return buf;
+}
+}  // namespace
+
+int validate(const ValidateArgs& a) {
+  const Scene s = loadScene(a.scene);
+  if (a.quiet) return 0;
+  size_t vertices = 0;
+  for (const Ring& o : s.obstacles) vertices += o.size();
+  std::printf("%s: valid %s scene%s%s\n", a.scene.c_str(), kSceneFormat,
+              s.name.empty() ? "" : " '", s.name.empty() ? "" : (s.name + "'").c_str());
+  std::printf("  bounds [%g, %g] x [%g, %g], %zu obstacles (%zu vertices), contact tolerance %g\n",
+              s.bounds.xmin, s.bounds.xmax, s.bounds.ymin, s.bounds.ymax, s.obstacles.size(),
+              vertices, s.tolerance());
+  for (const Robot& r : s.robots)
+    std::printf("  robot '%s': %zu vertices, %s, start %s, goal %s\n", r.name.c_str(), r.shape.size(),
+                motionName(r.motion), pose(r.start).c_str(), pose(r.goal).c_str());
+  return 0;
+}
+
+int check(const CheckArgs& a) {
+  const Scene scene = loadScene(a.scene);
+  const Path path = loadPath(a.path, scene);
+  const CollisionChecker checker(scene);
+  PathCheckSettings settings;
+  settings.maxEvaluations = a.maxEvaluations;
+  const PathCheckResult r = checkPath(scene, checker, path, settings);
+  const size_t segments = path.waypoints.size() - 1;
+  if (!r.ok) {
+    std::printf("%s: rejected: segment %zu (waypoint %zu to %zu) at s = %.6g: %s\n", a.path.c_str(),
+                r.segment, r.segment, std::min(r.segment + 1, segments), r.parameter, r.reason.c_str());
+    return 1;
+  }
+  std::printf("%s: certified collision-free (%zu waypoints, %zu segments, %zu poses checked)\n",
+              a.path.c_str(), path.waypoints.size(), segments, r.evaluations);
+  std::printf("  min clearance %.6g (0 = touching within the tolerance %g)\n", r.minClearance,
+              checker.tolerance());
+  std::printf("  length: translation %.6g, rotation %.6g rad (summed over robots)\n", r.translation,
+              r.rotation);
+  return 0;
+}
+
+int render(const RenderArgs& a) {
+  const Scene scene = loadScene(a.scene);
+  Path path;
+  if (!a.path.empty()) path = loadPath(a.path, scene);
+  SvgOptions o;
+  o.widthPx = a.width;
+  o.ghosts = a.ghosts;
+  o.animate = !a.noAnimation;
+  writeFileAtomically(a.output, renderSvg(scene, a.path.empty() ? nullptr : &path, o));
+  std::printf("%s: written\n", a.output.c_str());
+  return 0;
+}
+
+}  // namespace mms::cli

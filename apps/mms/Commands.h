@@ -1,0 +1,28 @@
+#pragma once
+// One function per CLI command. Each returns the process exit code: 0 success, 1 the
+// answer is "no" (path rejected, no path found), 2 bad input (InputError propagates).
+#include <string>
+
+namespace mms::cli {
+
+struct ValidateArgs {
+  std::string scene;
+  bool quiet = false;
+};
+int validate(const ValidateArgs& a);
+
+struct CheckArgs {
+  std::string scene, path;
+  size_t maxEvaluations = 20'000'000;
+};
+int check(const CheckArgs& a);
+
+struct RenderArgs {
+  std::string scene, path, output;
+  double width = 800;
+  int ghosts = 24;
+  bool noAnimation = false;
+};
+int render(const RenderArgs& a);
+
+}  // namespace mms::cli

@@ -1,0 +1,88 @@
+// mms: motion planning via manifold samples. Exit codes: 0 success, 1 negative answer (path
+// rejected, no path), 2 bad input or usage, 3 internal error.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "Commands.h"
+#include "scene/Errors.h"
+
+namespace {
+
+std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace mms::cli;
+  CLI::App app{"mms: motion planning via manifold samples for planar polygonal robots.\n"
+               "Scene and path formats: docs/formats.md. Exit codes: 0 success, 1 negative answer,\n"
+               "2 bad input, 3 internal error."};
+  app.set_version_flag("--version", "mms 0.1.0");
+  app.require_subcommand(1);
+
+  ValidateArgs va;
+  auto* validateCmd = app.add_subcommand("validate", "Load and validate a scene (mms-scene/1); print a summary");
+  validateCmd->add_option("SCENE", va.scene, "Scene file")->required();
+  validateCmd->add_flag("-q,--quiet", va.quiet, "Print nothing when valid");
+
+  CheckArgs ca;
+  auto* checkCmd = app.add_subcommand(
+      "check",
+      "Certify a path (mms-path/1) as a continuous collision-free motion from start to goal.\n"
+      "Exit 0 certified, 1 rejected (first failing segment, parameter and reason), 2 bad input");
+  checkCmd->add_option("SCENE", ca.scene, "Scene file")->required();
+  checkCmd->add_option("PATH", ca.path, "Path file")->required();
+  checkCmd->add_option("--max-evaluations", ca.maxEvaluations,
+                       "Poses the checker may evaluate before giving up")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+
+  RenderArgs ra;
+  auto* renderCmd = app.add_subcommand(
+      "render", "Draw a scene (and a path, animated) as SVG: start poses green, goal poses red");
+  renderCmd->add_option("SCENE", ra.scene, "Scene file")->required();
+  renderCmd->add_option("PATH", ra.path, "Path file to draw and animate");
+  renderCmd->add_option("-o,--output", ra.output, "SVG file to write")->required();
+  renderCmd->add_option("--width", ra.width, "Picture width in pixels")
+      ->capture_default_str()
+      ->check(CLI::Range(50.0, 20000.0));
+  renderCmd->add_option("--ghosts", ra.ghosts, "Faint robot poses drawn along the path")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+  renderCmd->add_flag("--no-animation", ra.noAnimation, "Leave out the animated robot");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "mms: " << oneLine(e.what()) << " (see mms --help)\n";
+    return 2;
+  }
+
+  try {
+    if (*validateCmd) return validate(va);
+    if (*checkCmd) return check(ca);
+    if (*renderCmd) return render(ra);
+  } catch (const mms::InputError& e) {
+    std::cerr << oneLine(e.what()) << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "mms: out of memory\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "mms: internal error: " << oneLine(e.what()) << "\n";
+    return 3;
+  }
+  return 2;
+}

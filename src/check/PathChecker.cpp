@@ -1,0 +1,192 @@
+#include "check/PathChecker.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+namespace mms {
+namespace {
+
+struct Piece {
+  double s0, s1;
+};
+
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+bool samePose(const Pose& a, const Pose& b, double posTol, double angTol) {
+  return std::fabs(a.x - b.x) <= posTol && std::fabs(a.y - b.y) <= posTol &&
+         std::fabs(std::remainder(a.theta - b.theta, 2 * M_PI)) <= angTol;
+}
+
+class Certifier {
+ public:
+  Certifier(const Scene& scene, const CollisionChecker& checker, const PathCheckSettings& settings,
+            PathCheckResult& result)
+      : scene_(scene), checker_(checker), settings_(settings), r_(result), k_(scene.robots.size()) {}
+
+  // Certifies the motion from a to b; on failure fills the result and returns false.
+  bool segment(size_t index, const Config& a, const Config& b) {
+    index_ = index;
+    a_ = &a;
+    b_ = &b;
+    rate_.assign(k_, 0.0);
+    for (size_t i = 0; i < k_; ++i) {
+      const double dp = std::hypot(b[3 * i] - a[3 * i], b[3 * i + 1] - a[3 * i + 1]);
+      const double dt = std::fabs(b[3 * i + 2] - a[3 * i + 2]);
+      r_.translation += dp;
+      r_.rotation += dt;
+      rate_[i] = dp + checker_.radius(i) * dt;  // bound on any point's displacement per unit s
+    }
+    // Robots that stay put are checked once; pieces then only test the moving ones.
+    if (evaluate(0.0, /*movingOnly=*/false, 0.0) == Status::Collision) return fail(0.0, why_);
+    if (budgetExceeded_) return fail(0.0, why_);
+    // Pieces are visited left to right; after a collision only what lies before it is
+    // searched further, so the reported parameter is the first failure along the segment.
+    double failAt = -1;
+    std::string failWhy;
+    std::vector<Piece> stack{{0.0, 1.0}};
+    while (!stack.empty()) {
+      const Piece p = stack.back();
+      stack.pop_back();
+      if (failAt >= 0 && p.s0 >= failAt) continue;
+      const double half = 0.5 * (p.s1 - p.s0);
+      const double mid = p.s0 + half;
+      const Status st = evaluate(mid, /*movingOnly=*/true, half);
+      if (budgetExceeded_) return fail(mid, why_);
+      if (st == Status::Certified) continue;
+      if (st == Status::Collision) {
+        failAt = mid;
+        failWhy = why_;
+        stack.push_back({p.s0, mid});
+        continue;
+      }
+      if (half * maxRate() < 0.25 * checker_.tolerance()) {
+        failAt = mid;
+        failWhy = why_ + " (clearance below the contact tolerance " + num(checker_.tolerance()) + ")";
+        continue;
+      }
+      stack.push_back({mid, p.s1});
+      stack.push_back({p.s0, mid});
+    }
+    if (failAt >= 0) return fail(failAt, failWhy);
+    return true;
+  }
+
+ private:
+  double maxRate() const {
+    double m = 0;
+    for (double v : rate_) m = std::max(m, v);
+    return m;
+  }
+
+  Pose interpolated(size_t robot, double s) const {
+    const Config &a = *a_, &b = *b_;
+    auto lerp = [&](size_t c) { return a[c] + s * (b[c] - a[c]); };
+    return {lerp(3 * robot), lerp(3 * robot + 1), lerp(3 * robot + 2)};
+  }
+
+  bool fail(double s, const std::string& why) {
+    r_.ok = false;
+    r_.segment = index_;
+    r_.parameter = s;
+    r_.reason = why;
+    return false;
+  }
+
+  enum class Status { Certified, Uncertified, Collision };
+
+  // Checks the pose at parameter s: Collision when a robot hits something there, Uncertified
+  // when some clearance does not exceed the displacement bound over +-half (why_ says which).
+  Status evaluate(double s, bool movingOnly, double half) {
+    if (++r_.evaluations > settings_.maxEvaluations) {
+      budgetExceeded_ = true;
+      why_ = "could not certify within " + std::to_string(settings_.maxEvaluations) +
+             " clearance evaluations (the path runs along contacts)";
+      return Status::Collision;
+    }
+    Status st = Status::Certified;
+    auto note = [&](double distance, double bound, size_t robot, const std::string& other) {
+      r_.minClearance = std::min(r_.minClearance, std::max(0.0, distance - checker_.tolerance()));
+      if (st == Status::Collision || distance > bound) return;
+      st = distance <= 0 ? Status::Collision : Status::Uncertified;
+      why_ = "robot '" + scene_.robots[robot].name + "' hits " + other;
+    };
+    for (size_t i = 0; i < k_; ++i) {
+      if (movingOnly != (rate_[i] > 0)) continue;
+      const auto c = checker_.robotClearance(i, interpolated(i, s));
+      note(c.distance, half * rate_[i], i, c.nearest.describe(scene_));
+    }
+    for (size_t i = 0; i < k_; ++i)
+      for (size_t j = i + 1; j < k_; ++j) {
+        if (movingOnly != (rate_[i] > 0 || rate_[j] > 0)) continue;
+        const double d = checker_.robotsDistance(i, interpolated(i, s), j, interpolated(j, s));
+        note(d, half * (rate_[i] + rate_[j]), i, "robot '" + scene_.robots[j].name + "'");
+      }
+    return st;
+  }
+
+  const Scene& scene_;
+  const CollisionChecker& checker_;
+  const PathCheckSettings& settings_;
+  PathCheckResult& r_;
+  size_t k_;
+  size_t index_ = 0;
+  const Config *a_ = nullptr, *b_ = nullptr;
+  std::vector<double> rate_;
+  bool budgetExceeded_ = false;
+  std::string why_;
+};
+
+}  // namespace
+
+PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker, const Path& path,
+                          const PathCheckSettings& settings) {
+  PathCheckResult r;
+  r.minClearance = std::numeric_limits<double>::infinity();
+  const size_t k = scene.robots.size();
+  const auto& w = path.waypoints;
+  auto fail = [&](size_t segment, double s, std::string why) {
+    r.ok = false;
+    r.segment = segment;
+    r.parameter = s;
+    r.reason = std::move(why);
+    return r;
+  };
+  if (w.empty()) return fail(0, 0, "the path has no waypoints");
+
+  // Ends: positions within the tolerance, angles equal modulo 2 pi (displacing no point of
+  // the robot by more than the tolerance).
+  const Config start = startConfig(scene), goal = goalConfig(scene);
+  for (size_t i = 0; i < k; ++i) {
+    const double posTol = checker.tolerance();
+    const double angTol = checker.tolerance() / std::max(1.0, checker.radius(i));
+    const std::string who = "robot '" + scene.robots[i].name + "'";
+    if (!samePose(poseOf(w.front(), i), poseOf(start, i), posTol, angTol))
+      return fail(0, 0, "the first waypoint is not the start of " + who);
+    if (!samePose(poseOf(w.back(), i), poseOf(goal, i), posTol, angTol))
+      return fail(w.size() - 1, 1, "the last waypoint is not the goal of " + who);
+    if (scene.robots[i].motion == Motion::Translate)
+      for (size_t j = 0; j < w.size(); ++j)
+        if (w[j][3 * i + 2] != scene.robots[i].start.theta)
+          return fail(j == 0 ? 0 : j - 1, j == 0 ? 0 : 1,
+                      who + " only translates but has angle " + num(w[j][3 * i + 2]) +
+                          " at waypoint " + std::to_string(j));
+  }
+
+  Certifier certifier(scene, checker, settings, r);
+  if (w.size() == 1) {
+    if (!certifier.segment(0, w[0], w[0])) return r;
+  }
+  for (size_t j = 0; j + 1 < w.size(); ++j)
+    if (!certifier.segment(j, w[j], w[j + 1])) return r;
+  r.ok = true;
+  return r;
+}
+
+}  // namespace mms

@@ -1,0 +1,39 @@
+#pragma once
+// Certifies a path as a continuous motion, not only at sampled poses.
+//
+// Each segment between waypoints is split into pieces until each piece is proven free: at a
+// piece's midpoint the clearance of every moving robot (to the bounds, the obstacles and the
+// other robots) must exceed how far any of its points can move within half the piece,
+// |dp| + radius * |dtheta|. Clearances are measured on the robots shrunk by the contact
+// tolerance, so touching contacts are allowed and penetration beyond the tolerance is not.
+#include <cstddef>
+#include <string>
+
+#include "geometry/CollisionChecker.h"
+#include "scene/PathIO.h"
+
+namespace mms {
+
+struct PathCheckSettings {
+  /// Clearance evaluations allowed over the whole path; a path that slides along contacts
+  /// for long stretches needs pieces as short as the tolerance and may run out of them.
+  size_t maxEvaluations = 20'000'000;
+};
+
+struct PathCheckResult {
+  bool ok = false;
+  // When !ok: where and why. `segment` is the index of the segment's first waypoint.
+  size_t segment = 0;
+  double parameter = 0;  // along the segment, in [0, 1]
+  std::string reason;
+  // Statistics.
+  double minClearance = 0;  // smallest clearance seen at a checked pose (0: touching)
+  size_t evaluations = 0;   // clearance evaluations (poses checked)
+  double translation = 0;   // summed over robots
+  double rotation = 0;      // radians, summed over robots
+};
+
+PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker, const Path& path,
+                          const PathCheckSettings& settings = {});
+
+}  // namespace mms

@@ -1,0 +1,76 @@
+#pragma once
+// The collision checker every planner shares (MMS's path certification and the OMPL
+// baselines alike), so that all of them plan against one definition of free space.
+//
+// Free: the robot lies inside the bounds and its interior is disjoint from every obstacle's
+// and every other robot's interior. Touching is free within the scene tolerance delta: each
+// robot is tested as its shape shrunk inwards by delta (mitred offset), so contacts up to
+// depth delta count as touching, and exact contacts (as MMS produces them) are never
+// reported as collisions however the doubles round.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/Scene.h"
+
+namespace mms {
+
+/// What a placement hits (or, for clearance, what is nearest).
+struct Contact {
+  enum class Kind { None, Bounds, Obstacle, Robot } kind = Kind::None;
+  size_t index = 0;  // obstacle index or other robot's index
+  std::string describe(const Scene& scene) const;
+};
+
+/// Shrinks a robot shape by the contact tolerance; error text when its features are too
+/// small for that (the shrunk ring would not be simple or not inside the shape).
+struct ShrunkShape {
+  Ring ring;
+  std::optional<std::string> error;
+};
+ShrunkShape shrinkForContacts(const Ring& shape, double tolerance);
+
+class CollisionChecker {
+ public:
+  /// The scene must have been validated (robot shapes shrink without error).
+  explicit CollisionChecker(const Scene& scene);
+
+  /// Robot `robot` at `pose` against the bounds and the obstacles (other robots ignored).
+  bool robotFree(size_t robot, const Pose& pose) const;
+  /// Robots a and b at their poses do not overlap.
+  bool robotsDisjoint(size_t a, const Pose& pa, size_t b, const Pose& pb) const;
+  /// Every robot free and no two robots overlap.
+  bool isFree(const Config& q) const;
+
+  /// The first thing a robot hits, for messages (Kind::None when free).
+  Contact robotContact(size_t robot, const Pose& pose) const;
+  /// First contact of any robot in q: the robot's index and what it hits.
+  std::optional<std::pair<size_t, Contact>> firstContact(const Config& q) const;
+
+  struct Clearance {
+    double distance = 0;  // of the shrunk shape; 0 when it touches or overlaps
+    Contact nearest;
+  };
+  /// Distance from the (shrunk) robot to the bounds and the obstacles.
+  Clearance robotClearance(size_t robot, const Pose& pose) const;
+  /// Distance between two (shrunk) robots.
+  double robotsDistance(size_t a, const Pose& pa, size_t b, const Pose& pb) const;
+
+  double tolerance() const { return tolerance_; }
+  /// Largest distance of a shape point from its frame origin: a rotation by dtheta moves no
+  /// point of the robot further than radius * |dtheta|.
+  double radius(size_t robot) const { return radii_[robot]; }
+  const Ring& shrunkShape(size_t robot) const { return shapes_[robot]; }
+  size_t robotCount() const { return shapes_.size(); }
+
+ private:
+  Box bounds_;
+  double tolerance_;
+  std::vector<Ring> obstacles_;
+  std::vector<Box> obstacleBoxes_;
+  std::vector<Ring> shapes_;
+  std::vector<double> radii_;
+};
+
+}  // namespace mms

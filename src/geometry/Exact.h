@@ -1,0 +1,44 @@
+#pragma once
+// The exact world: CGAL's exact-construction kernel, rotations by rational tan(theta/2) so a
+// rotated robot has exact rational vertices, and the only conversions between exact and
+// double geometry in the code base.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+
+#include "geometry/Vec2.h"
+
+namespace mms::exact {
+
+using Kernel = CGAL::Epeck;
+using FT = Kernel::FT;
+using Point = Kernel::Point_2;
+using Polygon = CGAL::Polygon_2<Kernel>;
+
+/// An angle whose rotation is exact: rotation by 2*atan(t), then by pi when `half` is set.
+/// With |t| <= 1 every angle is reachable, including pi (t = 0, half = true), which plain
+/// tan(theta/2) cannot express.
+struct RationalAngle {
+  FT t = 0;
+  bool half = false;
+  double radians() const;  // in (-pi, pi]
+  /// cos and sin of the angle, exactly: ((1 - t^2), 2t) / (1 + t^2), negated for `half`.
+  std::pair<FT, FT> cosSin() const;
+};
+
+/// The rational angle nearest to theta with tan denominator 2^bits (|error| < 2^-bits rad).
+RationalAngle rationalAngleNear(double theta, int bits = 24);
+
+Point toExact(Vec2 v);
+Polygon toExact(const Ring& ring);
+Vec2 toDouble(const Point& p);
+Ring toDouble(const Polygon& poly);
+
+/// The polygon rotated by `angle` about the origin, exactly.
+Polygon rotated(const Polygon& poly, const RationalAngle& angle);
+
+/// Exact predicate: the interiors of the two simple polygons (given in doubles, taken as
+/// exact values) intersect. Touching boundaries do not count. The independent reference for
+/// the floating-point collision checker.
+bool interiorsIntersect(const Ring& a, const Ring& b);
+
+}  // namespace mms::exact

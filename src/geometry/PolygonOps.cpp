@@ -1,0 +1,144 @@
+#include "geometry/PolygonOps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mms {
+
+Box boundingBox(const Ring& ring) {
+  Box b{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (Vec2 v : ring) {
+    b.xmin = std::min(b.xmin, v.x);
+    b.ymin = std::min(b.ymin, v.y);
+    b.xmax = std::max(b.xmax, v.x);
+    b.ymax = std::max(b.ymax, v.y);
+  }
+  return b;
+}
+
+double signedArea2(const Ring& ring) {
+  double a = 0;
+  const size_t n = ring.size();
+  for (size_t i = 0, j = n - 1; i < n; j = i++) a += cross(ring[j], ring[i]);
+  return a;
+}
+
+double radius(const Ring& ring) {
+  double r = 0;
+  for (Vec2 v : ring) r = std::max(r, norm(v));
+  return r;
+}
+
+bool insideRing(const Ring& ring, Vec2 p) {
+  bool in = false;
+  const size_t n = ring.size();
+  for (size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2 a = ring[j], b = ring[i];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const double xCross = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (p.x < xCross) in = !in;
+    }
+  }
+  return in;
+}
+
+namespace {
+
+inline double orient(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }
+
+// c is known collinear with [a,b]; is it within the segment's box?
+inline bool withinBox(Vec2 a, Vec2 b, Vec2 c) {
+  return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
+         c.y <= std::max(a.y, b.y);
+}
+
+inline Box segmentBox(Vec2 a, Vec2 b) {
+  return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+}
+
+}  // namespace
+
+bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double d1 = orient(c, d, a), d2 = orient(c, d, b);
+  if ((d1 > 0 && d2 > 0) || (d1 < 0 && d2 < 0)) return false;
+  const double d3 = orient(a, b, c), d4 = orient(a, b, d);
+  if ((d3 > 0 && d4 > 0) || (d3 < 0 && d4 < 0)) return false;
+  if (d1 != 0 || d2 != 0 || d3 != 0 || d4 != 0) return true;
+  // All four points collinear: the segments meet when their extents overlap.
+  return withinBox(a, b, c) || withinBox(a, b, d) || withinBox(c, d, a) || withinBox(c, d, b);
+}
+
+double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  double t = len2 > 0 ? dot(p - a, ab) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return norm(p - (a + t * ab));
+}
+
+double segmentSegmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (segmentsIntersect(a, b, c, d)) return 0.0;
+  return std::min(std::min(pointSegmentDistance(a, c, d), pointSegmentDistance(b, c, d)),
+                  std::min(pointSegmentDistance(c, a, b), pointSegmentDistance(d, a, b)));
+}
+
+bool ringsIntersect(const Ring& a, const Box& boxA, const Ring& b, const Box& boxB) {
+  if (!boxA.overlaps(boxB)) return false;
+  const size_t n = a.size(), m = b.size();
+  for (size_t i = 0, ip = n - 1; i < n; ip = i++) {
+    const Vec2 p = a[ip], q = a[i];
+    const Box e = segmentBox(p, q);
+    if (!e.overlaps(boxB)) continue;
+    for (size_t j = 0, jp = m - 1; j < m; jp = j++) {
+      const Vec2 r = b[jp], s = b[j];
+      if (std::max(r.x, s.x) < e.xmin || std::min(r.x, s.x) > e.xmax ||
+          std::max(r.y, s.y) < e.ymin || std::min(r.y, s.y) > e.ymax)
+        continue;
+      if (segmentsIntersect(p, q, r, s)) return true;
+    }
+  }
+  // No boundary crossing: they meet only if one lies inside the other.
+  if (boxB.contains(boxA) && insideRing(b, a[0])) return true;
+  if (boxA.contains(boxB) && insideRing(a, b[0])) return true;
+  return false;
+}
+
+double ringDistance(const Ring& a, const Box& boxA, const Ring& b, const Box& boxB) {
+  if (ringsIntersect(a, boxA, b, boxB)) return 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  const size_t n = a.size(), m = b.size();
+  for (size_t i = 0, ip = n - 1; i < n; ip = i++) {
+    const Box e = segmentBox(a[ip], a[i]);
+    if (e.distance(boxB) >= best) continue;
+    for (size_t j = 0, jp = m - 1; j < m; jp = j++) {
+      if (e.distance(segmentBox(b[jp], b[j])) >= best) continue;
+      best = std::min(best, segmentSegmentDistance(a[ip], a[i], b[jp], b[j]));
+    }
+  }
+  return best;
+}
+
+ShrinkResult shrinkRing(const Ring& ring, double delta) {
+  ShrinkResult out;
+  const size_t n = ring.size();
+  out.ring.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 prev = ring[(i + n - 1) % n], v = ring[i], next = ring[(i + 1) % n];
+    const Vec2 e1 = v - prev, e2 = next - v;
+    // Left normals point inside a counter-clockwise ring.
+    const Vec2 n1 = (1.0 / norm(e1)) * Vec2{-e1.y, e1.x};
+    const Vec2 n2 = (1.0 / norm(e2)) * Vec2{-e2.y, e2.x};
+    const double denom = 1.0 + dot(n1, n2);
+    // The mitre point m satisfies m.n1 = m.n2 = delta; a hairpin vertex has no usable mitre.
+    if (denom < 1e-12) {
+      out.error = "vertex " + std::to_string(i) + " is a hairpin (its edges fold back)";
+      return out;
+    }
+    out.ring[i] = v + (delta / denom) * (n1 + n2);
+  }
+  return out;
+}
+
+}  // namespace mms

@@ -1,0 +1,42 @@
+#pragma once
+// Floating-point polygon helpers for the fast paths (collision checking, clearance).
+// They are not exact; exact predicates live in Predicates.h, exact constructions in Exact.h.
+#include <optional>
+#include <string>
+
+#include "geometry/Vec2.h"
+
+namespace mms {
+
+/// Twice the signed area (positive for counter-clockwise rings).
+double signedArea2(const Ring& ring);
+
+/// Largest distance of a vertex from the frame origin: bounds how far any point of the shape
+/// moves under a rotation by dtheta (at most radius * |dtheta|).
+double radius(const Ring& ring);
+
+/// Point in polygon by crossing number; points on the boundary may go either way.
+bool insideRing(const Ring& ring, Vec2 p);
+
+/// Closed segments [a,b] and [c,d] share a point (floating-point orientation tests).
+bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
+double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b);
+double segmentSegmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
+/// Distance between two closed polygons (0 when they intersect or one contains the other).
+double ringDistance(const Ring& a, const Box& boxA, const Ring& b, const Box& boxB);
+
+/// Closed polygons a and b share a point.
+bool ringsIntersect(const Ring& a, const Box& boxA, const Ring& b, const Box& boxB);
+
+/// Inward offset of a counter-clockwise ring by delta with mitred vertices. Returns an error
+/// text when delta is too large for the ring's features (the result would not be simple or
+/// would not lie inside the ring).
+struct ShrinkResult {
+  Ring ring;
+  std::optional<std::string> error;
+};
+ShrinkResult shrinkRing(const Ring& ring, double delta);
+
+}  // namespace mms

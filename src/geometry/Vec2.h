@@ -1,0 +1,66 @@
+#pragma once
+// Plain double-precision geometry values shared by every stage. Exact (CGAL) types live in
+// Exact.h; conversions between the two worlds are there too.
+#include <cmath>
+#include <vector>
+
+namespace mms {
+
+struct Vec2 {
+  double x = 0, y = 0;
+  friend Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+  friend Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+  friend Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
+  friend bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
+};
+
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+
+/// A simple polygon as its vertex cycle; counter-clockwise once a scene is loaded.
+using Ring = std::vector<Vec2>;
+
+/// Axis-aligned box; also the scene bounds.
+struct Box {
+  double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+  bool overlaps(const Box& o) const {
+    return xmin <= o.xmax && o.xmin <= xmax && ymin <= o.ymax && o.ymin <= ymax;
+  }
+  bool contains(const Box& o) const {
+    return xmin <= o.xmin && o.xmax <= xmax && ymin <= o.ymin && o.ymax <= ymax;
+  }
+  bool contains(Vec2 p) const { return xmin <= p.x && p.x <= xmax && ymin <= p.y && p.y <= ymax; }
+  double width() const { return xmax - xmin; }
+  double height() const { return ymax - ymin; }
+  /// Distance between two boxes (0 when they overlap).
+  double distance(const Box& o) const {
+    double dx = std::fmax(0.0, std::fmax(o.xmin - xmax, xmin - o.xmax));
+    double dy = std::fmax(0.0, std::fmax(o.ymin - ymax, ymin - o.ymax));
+    return std::hypot(dx, dy);
+  }
+};
+
+Box boundingBox(const Ring& ring);
+
+/// Placement of one robot: rotate its shape by theta (counter-clockwise, radians) about the
+/// frame origin, then translate by (x, y).
+struct Pose {
+  double x = 0, y = 0, theta = 0;
+};
+
+/// Rigid transform with its rotation precomputed; the hot loops transform many vertices.
+struct Transform {
+  double c = 1, s = 0, tx = 0, ty = 0;
+  explicit Transform(const Pose& p) : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.x), ty(p.y) {}
+  Vec2 operator()(Vec2 v) const { return {tx + c * v.x - s * v.y, ty + s * v.x + c * v.y}; }
+};
+
+/// Transforms a ring into a caller-owned buffer (no allocation once the buffer is large enough).
+inline void transformRing(const Ring& in, const Pose& pose, Ring& out) {
+  Transform t(pose);
+  out.resize(in.size());
+  for (size_t i = 0; i < in.size(); ++i) out[i] = t(in[i]);
+}
+
+}  // namespace mms

@@ -1,0 +1,171 @@
+#include "render/SvgRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "geometry/PolygonOps.h"
+
+namespace mms {
+namespace {
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string points(const Ring& ring) {
+  std::string s;
+  for (Vec2 v : ring) s += fmt(v.x) + "," + fmt(v.y) + " ";
+  return s;
+}
+
+Ring placed(const Ring& shape, const Pose& pose) {
+  Ring out;
+  transformRing(shape, pose, out);
+  return out;
+}
+
+// Cumulative motion along the path (sum over robots of |dp| + radius * |dtheta|), used to
+// space ghosts and to time the animation by distance rather than by waypoint count.
+std::vector<double> cumulativeEffort(const Scene& scene, const Path& path) {
+  std::vector<double> radii;
+  for (const Robot& r : scene.robots) radii.push_back(radius(r.shape));
+  std::vector<double> acc{0.0};
+  for (size_t j = 1; j < path.waypoints.size(); ++j) {
+    const Config &a = path.waypoints[j - 1], &b = path.waypoints[j];
+    double e = 0;
+    for (size_t i = 0; i < scene.robots.size(); ++i)
+      e += std::hypot(b[3 * i] - a[3 * i], b[3 * i + 1] - a[3 * i + 1]) +
+           radii[i] * std::fabs(b[3 * i + 2] - a[3 * i + 2]);
+    acc.push_back(acc.back() + e);
+  }
+  return acc;
+}
+
+Pose poseAtEffort(const Path& path, const std::vector<double>& acc, size_t robot, double e) {
+  size_t j = std::upper_bound(acc.begin(), acc.end(), e) - acc.begin();
+  if (j == 0) return poseOf(path.waypoints.front(), robot);
+  if (j >= acc.size()) return poseOf(path.waypoints.back(), robot);
+  const double span = acc[j] - acc[j - 1];
+  const double s = span > 0 ? (e - acc[j - 1]) / span : 0;
+  const Pose a = poseOf(path.waypoints[j - 1], robot), b = poseOf(path.waypoints[j], robot);
+  return {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), a.theta + s * (b.theta - a.theta)};
+}
+
+const char* kTraceColours[] = {"#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf", "#bcbd22"};
+
+}  // namespace
+
+std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o) {
+  const Box& b = scene.bounds;
+  const double extent = std::max(b.width(), b.height());
+  const double margin = 20, titleH = scene.name.empty() ? 0 : 24;
+  const double scale = (o.widthPx - 2 * margin) / b.width();
+  const double heightPx = b.height() * scale + 2 * margin + titleH;
+  const double stroke = extent / 400;
+
+  std::ostringstream svg;
+  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(o.widthPx) << "\" height=\""
+      << fmt(heightPx) << "\" viewBox=\"0 0 " << fmt(o.widthPx) << " " << fmt(heightPx) << "\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  if (!scene.name.empty())
+    svg << "<text x=\"" << fmt(margin) << "\" y=\"" << fmt(margin + 8)
+        << "\" font-family=\"sans-serif\" font-size=\"16\">" << escape(scene.name) << "</text>\n";
+  // World coordinates: y up, as in the scene file.
+  svg << "<g transform=\"translate(" << fmt(margin) << " " << fmt(heightPx - margin) << ") scale("
+      << fmt(scale) << " " << fmt(-scale) << ") translate(" << fmt(-b.xmin) << " " << fmt(-b.ymin)
+      << ")\" stroke-linejoin=\"round\">\n";
+  svg << "<rect x=\"" << fmt(b.xmin) << "\" y=\"" << fmt(b.ymin) << "\" width=\"" << fmt(b.width())
+      << "\" height=\"" << fmt(b.height()) << "\" fill=\"#f4f4f0\" stroke=\"#333\" stroke-width=\""
+      << fmt(2 * stroke) << "\"/>\n";
+  svg << "<g id=\"obstacles\" fill=\"#4a74b4\" stroke=\"#23406e\" stroke-width=\"" << fmt(stroke) << "\">\n";
+  for (const Ring& ob : scene.obstacles) svg << "<polygon points=\"" << points(ob) << "\"/>\n";
+  svg << "</g>\n";
+
+  const size_t k = scene.robots.size();
+  if (path && !path->waypoints.empty()) {
+    const std::vector<double> acc = cumulativeEffort(scene, *path);
+    const double total = acc.back();
+    // Traces of the reference points.
+    for (size_t i = 0; i < k; ++i) {
+      svg << "<polyline fill=\"none\" stroke=\"" << kTraceColours[i % 6] << "\" stroke-width=\""
+          << fmt(stroke) << "\" stroke-dasharray=\"" << fmt(3 * stroke) << " " << fmt(2 * stroke)
+          << "\" points=\"";
+      for (const Config& q : path->waypoints) svg << fmt(q[3 * i]) << "," << fmt(q[3 * i + 1]) << " ";
+      svg << "\"/>\n";
+    }
+    // Ghost poses evenly spaced by motion.
+    svg << "<g id=\"ghosts\" fill=\"#888\" fill-opacity=\"0.08\" stroke=\"#555\" stroke-opacity=\"0.35\" "
+        << "stroke-width=\"" << fmt(0.6 * stroke) << "\">\n";
+    for (int g = 1; g < o.ghosts && total > 0; ++g)
+      for (size_t i = 0; i < k; ++i)
+        svg << "<polygon points=\""
+            << points(placed(scene.robots[i].shape, poseAtEffort(*path, acc, i, total * g / o.ghosts)))
+            << "\"/>\n";
+    svg << "</g>\n";
+  }
+  svg << "<g id=\"starts\" fill=\"#2ca02c\" fill-opacity=\"0.55\" stroke=\"#1a631a\" stroke-width=\""
+      << fmt(stroke) << "\">\n";
+  for (const Robot& r : scene.robots) svg << "<polygon points=\"" << points(placed(r.shape, r.start)) << "\"/>\n";
+  svg << "</g>\n<g id=\"goals\" fill=\"#d62728\" fill-opacity=\"0.55\" stroke=\"#7f1516\" stroke-width=\""
+      << fmt(stroke) << "\">\n";
+  for (const Robot& r : scene.robots) svg << "<polygon points=\"" << points(placed(r.shape, r.goal)) << "\"/>\n";
+  svg << "</g>\n";
+
+  if (path && !path->waypoints.empty() && o.animate) {
+    const std::vector<double> acc = cumulativeEffort(scene, *path);
+    const double total = acc.back();
+    const double dur = std::clamp(total / extent * o.secondsPerExtent, 2.0, 120.0);
+    std::string keyTimes;
+    for (size_t j = 0; j < acc.size(); ++j)
+    {
+      if (j) keyTimes += ';';
+      keyTimes += fmt(total > 0 ? acc[j] / total : double(j) / std::max<size_t>(1, acc.size() - 1));
+    }
+    if (acc.size() == 1) keyTimes = "0";
+    svg << "<g id=\"animation\">\n";
+    for (size_t i = 0; i < k; ++i) {
+      std::string moves, turns;
+      for (size_t j = 0; j < path->waypoints.size(); ++j) {
+        const Pose p = poseOf(path->waypoints[j], i);
+        if (j) moves += ';', turns += ';';
+        moves += fmt(p.x) + " " + fmt(p.y);
+        turns += fmt(p.theta * 180 / M_PI);
+      }
+      const Pose p0 = poseOf(path->waypoints.front(), i);
+      const std::string timing = "dur=\"" + fmt(dur) + "s\" keyTimes=\"" + keyTimes +
+                                 "\" calcMode=\"linear\" repeatCount=\"indefinite\"";
+      svg << "<g transform=\"translate(" << fmt(p0.x) << " " << fmt(p0.y) << ")\">"
+          << "<animateTransform attributeName=\"transform\" type=\"translate\" values=\"" << moves
+          << "\" " << timing << "/>\n"
+          << "<g transform=\"rotate(" << fmt(p0.theta * 180 / M_PI) << ")\">"
+          << "<animateTransform attributeName=\"transform\" type=\"rotate\" values=\"" << turns
+          << "\" " << timing << "/>\n"
+          << "<polygon fill=\"#f2b01e\" fill-opacity=\"0.9\" stroke=\"#6b4e00\" stroke-width=\""
+          << fmt(stroke) << "\" points=\"" << points(scene.robots[i].shape) << "\"/>\n</g></g>\n";
+    }
+    svg << "</g>\n";
+  }
+  svg << "</g>\n</svg>\n";
+  return svg.str();
+}
+
+}  // namespace mms

@@ -1,0 +1,21 @@
+#pragma once
+// SVG pictures of scenes and paths in the style of the paper's figures: obstacles in blue,
+// robots at their start in green and at their goal in red; with a path, faint poses along it,
+// each robot's trace, and a robot that moves along the path (SMIL animation; renderers without
+// animation show it at its start).
+#include <string>
+
+#include "scene/PathIO.h"
+
+namespace mms {
+
+struct SvgOptions {
+  double widthPx = 800;  // the height follows the bounds' aspect ratio
+  int ghosts = 24;       // faint poses drawn along a path
+  bool animate = true;
+  double secondsPerExtent = 4;  // animation speed: time to sweep the bounds' larger side
+};
+
+std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& options = {});
+
+}  // namespace mms

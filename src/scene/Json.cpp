@@ -1,0 +1,145 @@
+#include "scene/Json.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace mms::json_in {
+
+const char* typeName(const Json& j) {
+  switch (j.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::object: return "an object";
+    case Json::value_t::array: return "an array";
+    case Json::value_t::string: return "a string";
+    case Json::value_t::boolean: return "a boolean";
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float: return "a number";
+    default: return "an unsupported value";
+  }
+}
+
+namespace {
+
+struct TooDeep {};
+
+// nlohmann's messages start with "[json.exception.parse_error.101] parse error at ...".
+std::string cleanParseMessage(const std::string& what) {
+  std::string m = what;
+  if (auto p = m.find("] "); m.rfind("[json.exception", 0) == 0 && p != std::string::npos)
+    m = m.substr(p + 2);
+  for (char& c : m)
+    if (c == '\n' || c == '\r') c = ' ';
+  return m;
+}
+
+}  // namespace
+
+Json parseText(const std::string& text, const std::string& source) {
+  // The callback sees the nesting depth before a value is built, so a hostile file cannot
+  // make us build (or later recursively destroy) a deep tree.
+  auto limitDepth = [](int depth, Json::parse_event_t, Json&) {
+    if (depth > kMaxDepth) throw TooDeep{};
+    return true;
+  };
+  try {
+    return Json::parse(text, limitDepth);
+  } catch (const TooDeep&) {
+    throw InputError(source + ": (document): JSON nested deeper than " +
+                     std::to_string(kMaxDepth) + " levels");
+  } catch (const Json::exception& e) {  // syntax errors, and numbers beyond double range
+    throw InputError(source + ": (document): not valid JSON: " + cleanParseMessage(e.what()));
+  }
+}
+
+Json parseFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": (file): cannot open for reading");
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw InputError(path + ": (file): cannot read (not a regular file?)");
+  if (size_t(size) > kMaxFileBytes)
+    throw InputError(path + ": (file): larger than " + std::to_string(kMaxFileBytes >> 20) +
+                     " MiB");
+  in.seekg(0);
+  std::string text(size_t(size), '\0');
+  if (!in.read(text.data(), size)) throw InputError(path + ": (file): read failed");
+  return parseText(text, path);
+}
+
+void Node::fail(const std::string& problem) const {
+  throw InputError(file_ + ": " + (where_.empty() ? "(document)" : where_) + ": " + problem);
+}
+
+Node Node::operator[](const char* key) const {
+  requireObject();
+  auto it = v_->find(key);
+  const std::string w = where_.empty() ? std::string(key) : where_ + "." + key;
+  if (it == v_->end()) Node(*v_, file_, w).fail("missing");
+  return Node(*it, file_, w);
+}
+
+Node Node::operator[](size_t i) const {
+  return Node((*v_)[i], file_, where_ + "[" + std::to_string(i) + "]");
+}
+
+void Node::requireObject() const {
+  if (!v_->is_object()) fail(std::string("expected an object, found ") + typeName(*v_));
+}
+
+void Node::allowOnly(std::initializer_list<const char*> keys) const {
+  requireObject();
+  for (auto it = v_->begin(); it != v_->end(); ++it) {
+    bool known = false;
+    for (const char* k : keys) known = known || it.key() == k;
+    if (!known) {
+      std::string list;
+      for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
+      Node(it.value(), file_, where_.empty() ? it.key() : where_ + "." + it.key())
+          .fail("unknown field (expected one of: " + list + ")");
+    }
+  }
+}
+
+size_t Node::arraySize(size_t minSize, size_t maxSize) const {
+  if (!v_->is_array()) fail(std::string("expected an array, found ") + typeName(*v_));
+  const size_t n = v_->size();
+  if (n < minSize || n > maxSize) {
+    if (minSize == maxSize) fail("expected " + std::to_string(minSize) + " elements, found " + std::to_string(n));
+    if (n < minSize) fail("expected at least " + std::to_string(minSize) + " elements, found " + std::to_string(n));
+    fail("too many elements (" + std::to_string(n) + ", at most " + std::to_string(maxSize) + ")");
+  }
+  return n;
+}
+
+std::string Node::string() const {
+  if (!v_->is_string()) fail(std::string("expected a string, found ") + typeName(*v_));
+  return v_->get<std::string>();
+}
+
+double Node::number(double limit) const {
+  if (!v_->is_number()) fail(std::string("expected a number, found ") + typeName(*v_));
+  const double x = v_->get<double>();
+  if (!std::isfinite(x)) fail("number is not finite");
+  if (std::fabs(x) > limit) {
+    std::ostringstream s;
+    s << "number " << x << " is out of range (|value| must be at most " << limit << ")";
+    fail(s.str());
+  }
+  return x;
+}
+
+Vec2 Node::point(double limit) const {
+  arraySize(2, 2);
+  return {(*this)[size_t(0)].number(limit), (*this)[size_t(1)].number(limit)};
+}
+
+Ring Node::ring(double limit, size_t maxVertices) const {
+  const size_t n = arraySize(3, maxVertices);
+  Ring r(n);
+  for (size_t i = 0; i < n; ++i) r[i] = (*this)[i].point(limit);
+  return r;
+}
+
+}  // namespace mms::json_in

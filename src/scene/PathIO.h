@@ -1,0 +1,29 @@
+#pragma once
+// Path files, format "mms-path/1" (docs/formats.md): waypoints of all robots' configurations,
+// linearly interpolated (angles are not wrapped).
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "scene/Scene.h"
+
+namespace mms {
+
+inline constexpr const char* kPathFormat = "mms-path/1";
+inline constexpr size_t kMaxWaypoints = 10'000'000;
+
+struct Path {
+  std::vector<Config> waypoints;
+  /// Keys a planner adds (planner, seed, statistics ...); written back unchanged.
+  nlohmann::json extra = nlohmann::json::object();
+};
+
+/// Loads a path and checks its shape against the scene (robot names, coordinates per
+/// waypoint). Throws InputError on any problem.
+Path loadPath(const std::string& file, const Scene& scene);
+Path parsePath(const nlohmann::json& doc, const std::string& source, const Scene& scene);
+
+nlohmann::json pathToJson(const Path& path, const Scene& scene);
+void savePath(const Path& path, const Scene& scene, const std::string& file);
+
+}  // namespace mms

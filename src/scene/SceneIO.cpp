@@ -1,0 +1,169 @@
+#include "scene/SceneIO.h"
+
+#include <set>
+
+#include "geometry/CollisionChecker.h"
+#include "geometry/Predicates.h"
+#include "geometry/PolygonOps.h"
+#include "scene/Json.h"
+#include "util/AtomicFile.h"
+
+namespace mms {
+
+using json_in::Node;
+
+Config startConfig(const Scene& scene) {
+  Config q;
+  for (const Robot& r : scene.robots) q.insert(q.end(), {r.start.x, r.start.y, r.start.theta});
+  return q;
+}
+
+Config goalConfig(const Scene& scene) {
+  Config q;
+  for (const Robot& r : scene.robots) q.insert(q.end(), {r.goal.x, r.goal.y, r.goal.theta});
+  return q;
+}
+
+namespace {
+
+/// A simple polygon with positive area, returned counter-clockwise.
+Ring readPolygon(const Node& node) {
+  Ring ring = node.ring(json_in::kMaxCoordinate, json_in::kMaxVertices);
+  if (auto rep = findRepeatedVertex(ring))
+    node.fail("repeated vertex (vertices " + std::to_string(rep->first) + " and " +
+              std::to_string(rep->second) + " coincide)");
+  if (allCollinear(ring)) node.fail("polygon has zero area (all vertices on one line)");
+  if (auto hit = findSelfIntersection(ring)) {
+    if (hit->first == ring.size()) node.fail("polygon self-intersects");
+    node.fail("polygon self-intersects (edges " + std::to_string(hit->first) + " and " +
+              std::to_string(hit->second) + ")");
+  }
+  if (!isCounterClockwise(ring)) std::reverse(ring.begin(), ring.end());
+  return ring;
+}
+
+Pose readPose(const Node& node) {
+  node.arraySize(3, 3);
+  return {node[size_t(0)].number(json_in::kMaxCoordinate),
+          node[size_t(1)].number(json_in::kMaxCoordinate),
+          node[size_t(2)].number(json_in::kMaxAngle)};
+}
+
+Robot readRobot(const Node& node, size_t index) {
+  node.allowOnly({"name", "shape", "start", "goal", "motion"});
+  Robot r;
+  r.name = node.has("name") ? node["name"].string() : "robot" + std::to_string(index);
+  if (r.name.empty()) node["name"].fail("robot name is empty");
+  r.shape = readPolygon(node["shape"]);
+  r.start = readPose(node["start"]);
+  r.goal = readPose(node["goal"]);
+  if (node.has("motion")) {
+    const std::string m = node["motion"].string();
+    if (m == "rigid") r.motion = Motion::Rigid;
+    else if (m == "translate") r.motion = Motion::Translate;
+    else node["motion"].fail("unknown motion kind '" + m + "' (expected rigid or translate)");
+  }
+  if (r.motion == Motion::Translate && r.goal.theta != r.start.theta)
+    node["goal"][size_t(2)].fail("a translate robot keeps its angle: goal angle " +
+                                 std::to_string(r.goal.theta) + " differs from start angle " +
+                                 std::to_string(r.start.theta));
+  return r;
+}
+
+// Start and goal must be free placements: inside the bounds, clear of obstacles and of the
+// other robots at the same end.
+void checkEndpoints(const Scene& scene, const Node& robots) {
+  const CollisionChecker checker(scene);
+  for (const char* end : {"start", "goal"}) {
+    const Config q = std::string(end) == "start" ? startConfig(scene) : goalConfig(scene);
+    for (size_t i = 0; i < scene.robots.size(); ++i) {
+      const Contact c = checker.robotContact(i, poseOf(q, i));
+      const std::string who = "robot '" + scene.robots[i].name + "'";
+      if (c.kind == Contact::Kind::Bounds) robots[i][end].fail(who + " is not inside the bounds");
+      if (c.kind == Contact::Kind::Obstacle)
+        robots[i][end].fail(who + " collides with " + c.describe(scene));
+    }
+    for (size_t i = 0; i < scene.robots.size(); ++i)
+      for (size_t j = i + 1; j < scene.robots.size(); ++j)
+        if (!checker.robotsDisjoint(i, poseOf(q, i), j, poseOf(q, j)))
+          robots[j][end].fail("robot '" + scene.robots[j].name + "' collides with robot '" +
+                              scene.robots[i].name + "'");
+  }
+}
+
+}  // namespace
+
+Scene parseScene(const nlohmann::json& doc, const std::string& source) {
+  const Node root(doc, source, "");
+  root.allowOnly({"format", "name", "bounds", "obstacles", "robots"});
+  const std::string format = root["format"].string();
+  if (format != kSceneFormat)
+    root["format"].fail("unsupported format '" + format + "' (expected " + kSceneFormat + ")");
+
+  Scene scene;
+  if (root.has("name")) scene.name = root["name"].string();
+
+  const Node b = root["bounds"];
+  b.arraySize(4, 4);
+  scene.bounds = {b[size_t(0)].number(json_in::kMaxCoordinate), b[size_t(1)].number(json_in::kMaxCoordinate),
+                  b[size_t(2)].number(json_in::kMaxCoordinate), b[size_t(3)].number(json_in::kMaxCoordinate)};
+  if (!(scene.bounds.xmin < scene.bounds.xmax) || !(scene.bounds.ymin < scene.bounds.ymax))
+    b.fail("bounds are inverted or empty (need xmin < xmax and ymin < ymax)");
+
+  const Node obstacles = root["obstacles"];
+  const size_t nObstacles = obstacles.arraySize(0, kMaxObstacles);
+  size_t totalVertices = 0;
+  for (size_t i = 0; i < nObstacles; ++i) {
+    scene.obstacles.push_back(readPolygon(obstacles[i]));
+    totalVertices += scene.obstacles.back().size();
+    if (totalVertices > 10 * json_in::kMaxVertices)
+      obstacles[i].fail("too many obstacle vertices in total (at most " +
+                        std::to_string(10 * json_in::kMaxVertices) + ")");
+  }
+
+  const Node robots = root["robots"];
+  const size_t nRobots = robots.arraySize(1, kMaxRobots);
+  std::set<std::string> names;
+  for (size_t i = 0; i < nRobots; ++i) {
+    scene.robots.push_back(readRobot(robots[i], i));
+    if (!names.insert(scene.robots.back().name).second)
+      (robots[i].has("name") ? robots[i]["name"] : robots[i])
+          .fail("duplicate robot name '" + scene.robots.back().name + "'");
+  }
+  for (size_t i = 0; i < nRobots; ++i) {
+    ShrunkShape s = shrinkForContacts(scene.robots[i].shape, scene.tolerance());
+    if (s.error) robots[i]["shape"].fail(*s.error);
+  }
+  checkEndpoints(scene, robots);
+  return scene;
+}
+
+Scene loadScene(const std::string& file) { return parseScene(json_in::parseFile(file), file); }
+
+nlohmann::json sceneToJson(const Scene& scene) {
+  auto ring = [](const Ring& r) {
+    nlohmann::json a = nlohmann::json::array();
+    for (Vec2 v : r) a.push_back({v.x, v.y});
+    return a;
+  };
+  nlohmann::json j;
+  j["format"] = kSceneFormat;
+  if (!scene.name.empty()) j["name"] = scene.name;
+  j["bounds"] = {scene.bounds.xmin, scene.bounds.ymin, scene.bounds.xmax, scene.bounds.ymax};
+  j["obstacles"] = nlohmann::json::array();
+  for (const Ring& o : scene.obstacles) j["obstacles"].push_back(ring(o));
+  j["robots"] = nlohmann::json::array();
+  for (const Robot& r : scene.robots)
+    j["robots"].push_back({{"name", r.name},
+                           {"shape", ring(r.shape)},
+                           {"start", {r.start.x, r.start.y, r.start.theta}},
+                           {"goal", {r.goal.x, r.goal.y, r.goal.theta}},
+                           {"motion", r.motion == Motion::Rigid ? "rigid" : "translate"}});
+  return j;
+}
+
+void saveScene(const Scene& scene, const std::string& file) {
+  writeFileAtomically(file, sceneToJson(scene).dump(1) + "\n");
+}
+
+}  // namespace mms

@@ -1,0 +1,23 @@
+#pragma once
+// Scene files, format "mms-scene/1" (docs/formats.md). Loading validates everything and
+// throws InputError with one line "FILE: LOCATION: PROBLEM" on the first problem found.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "scene/Scene.h"
+
+namespace mms {
+
+inline constexpr const char* kSceneFormat = "mms-scene/1";
+inline constexpr size_t kMaxRobots = 16;
+inline constexpr size_t kMaxObstacles = 100000;
+
+Scene loadScene(const std::string& file);
+/// `source` names the document in messages (normally its file name).
+Scene parseScene(const nlohmann::json& doc, const std::string& source);
+
+nlohmann::json sceneToJson(const Scene& scene);
+/// Writes the scene atomically (no partial file on failure).
+void saveScene(const Scene& scene, const std::string& file);
+
+}  // namespace mms

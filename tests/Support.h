@@ -1,0 +1,66 @@
+#pragma once
+// Helpers for tests: temporary files, running the mms binary, loading bundled scenarios.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace mms::test {
+
+inline std::string sourceDir() { return MMS_SOURCE_DIR; }
+inline std::string scenario(const std::string& rel) { return sourceDir() + "/scenarios/" + rel; }
+
+/// A fresh directory per test process, removed at exit.
+class TempDir {
+ public:
+  TempDir() {
+    std::string tmpl = (std::filesystem::temp_directory_path() / "mms-test-XXXXXX").string();
+    path_ = ::mkdtemp(tmpl.data());
+  }
+  ~TempDir() { std::filesystem::remove_all(path_); }
+  std::string file(const std::string& name, const std::string& content) const {
+    const std::string p = (path_ / name).string();
+    std::ofstream(p, std::ios::binary) << content;
+    return p;
+  }
+  std::string path(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct Outcome {
+  int code = -1;
+  std::string out, err;
+};
+
+/// Runs a shell command line, capturing stdout and stderr.
+inline Outcome runCommand(const std::string& command) {
+  TempDir dir;
+  const std::string out = dir.path("out"), err = dir.path("err");
+  const int status = std::system((command + " >" + out + " 2>" + err + " </dev/null").c_str());
+  Outcome r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = readFile(out);
+  r.err = readFile(err);
+  return r;
+}
+
+/// Runs the mms binary with the given arguments (already quoted where needed).
+inline Outcome runMms(const std::string& args) { return runCommand(std::string(MMS_BINARY) + " " + args); }
+
+inline std::string quote(const std::string& s) { return "'" + s + "'"; }
+
+}  // namespace mms::test

@@ -1,0 +1,216 @@
+// The floating-point collision checker against CGAL's exact predicates, and the exact
+// geometry helpers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/CollisionChecker.h"
+#include "geometry/Exact.h"
+#include "geometry/PolygonOps.h"
+#include "scene/Generators.h"
+#include "scene/SceneIO.h"
+
+using namespace mms;
+
+namespace {
+
+Ring placedRing(const Ring& shape, const Pose& pose) {
+  Ring out;
+  transformRing(shape, pose, out);
+  return out;
+}
+
+// Exact reference: the placed ring lies inside the bounds and its interior meets no
+// obstacle's interior. Obstacles whose boxes miss the ring's box cannot meet it (box tests in
+// doubles are exact).
+bool exactFree(const Scene& s, const Ring& placed) {
+  const Box box = boundingBox(placed);
+  if (!s.bounds.contains(box)) return false;
+  for (const Ring& o : s.obstacles)
+    if (box.overlaps(boundingBox(o)) && exact::interiorsIntersect(placed, o)) return false;
+  return true;
+}
+
+Scene benchmarkScene(uint64_t seed) {
+  RandomPolygonsSettings st;
+  st.seed = seed;
+  st.obstacles = 20;
+  st.obstacleVertices = 8;
+  st.robotVertices = 10;
+  // Validate through the loader so the generator's output is a legal scene.
+  return parseScene(sceneToJson(randomPolygonsScene(st)), "generated");
+}
+
+}  // namespace
+
+TEST(CollisionChecker, AgreesWithExactPredicatesOnRandomPlacements) {
+  const Scene s = benchmarkScene(7);
+  const CollisionChecker checker(s);
+  const Ring& shrunk = checker.shrunkShape(0);
+  const ShrinkResult deeper = shrinkRing(s.robots[0].shape, 2 * s.tolerance());
+  ASSERT_FALSE(deeper.error);
+  Random rng(11);
+  const Box& b = s.bounds;
+  int free = 0, blocked = 0, vsShrunk = 0, vsShape = 0, unexplained = 0;
+  const int n = 10000;
+  for (int i = 0; i < n; ++i) {
+    const Pose p{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax), rng.uniform(-M_PI, M_PI)};
+    const bool fast = checker.robotFree(0, p);
+    (fast ? free : blocked)++;
+    // Same definition, exact arithmetic: the shrunk shape's interior.
+    if (fast != exactFree(s, placedRing(shrunk, p))) ++vsShrunk;
+    // The true shape: disagreement only inside the tolerance band.
+    if (fast != exactFree(s, placedRing(s.robots[0].shape, p))) {
+      ++vsShape;
+      if (!exactFree(s, placedRing(deeper.ring, p))) ++unexplained;
+    }
+  }
+  std::printf("[ info ] %d placements: %d free, %d blocked; %d differ from the exact answer for the "
+              "unshrunk shape (all within the tolerance band)\n", n, free, blocked, vsShape);
+  EXPECT_EQ(vsShrunk, 0);
+  EXPECT_EQ(unexplained, 0);
+  EXPECT_LE(vsShape, 2);  // uniform placements essentially never land within 1e-6 of contact
+  // The sample must exercise both answers.
+  EXPECT_GT(free, n / 10);
+  EXPECT_GT(blocked, n / 10);
+}
+
+TEST(CollisionChecker, TreatsNearContactsAsTouching) {
+  // Placements within ~1e-12 of contact (found by bisection with the exact predicate) are
+  // tolerance-close: the checker must call them free on both sides of the contact.
+  const Scene s = benchmarkScene(3);
+  const CollisionChecker checker(s);
+  const Ring& shape = s.robots[0].shape;
+  Random rng(5);
+  const Box& b = s.bounds;
+  int contacts = 0;
+  for (int attempt = 0; attempt < 4000 && contacts < 300; ++attempt) {
+    const Pose a{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax), rng.uniform(-M_PI, M_PI)};
+    const Pose c{a.x + rng.uniform(-3, 3), a.y + rng.uniform(-3, 3), a.theta + rng.uniform(-0.5, 0.5)};
+    if (!exactFree(s, placedRing(shape, a)) || exactFree(s, placedRing(shape, c))) continue;
+    double lo = 0, hi = 1;
+    auto at = [&](double t) {
+      return Pose{a.x + t * (c.x - a.x), a.y + t * (c.y - a.y), a.theta + t * (c.theta - a.theta)};
+    };
+    for (int k = 0; k < 45; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (exactFree(s, placedRing(shape, at(mid))) ? lo : hi) = mid;
+    }
+    ++contacts;
+    EXPECT_TRUE(checker.robotFree(0, at(lo))) << "free side of contact " << contacts;
+    EXPECT_TRUE(checker.robotFree(0, at(hi))) << "touching side of contact " << contacts;
+    // Well past the tolerance it must collide: move 100 tolerances further along, which
+    // penetrates unless the segment grazes (then the exact answer says so too).
+    const double step = 100 * s.tolerance() / std::hypot(c.x - a.x, c.y - a.y);
+    const Pose deep = at(std::min(1.0, hi + step));
+    if (!exactFree(s, placedRing(checker.shrunkShape(0), deep))) {
+      EXPECT_FALSE(checker.robotFree(0, deep)) << "deep side of contact " << contacts;
+    }
+  }
+  std::printf("[ info ] %d near-contact placements checked\n", contacts);
+  EXPECT_GE(contacts, 100);
+}
+
+TEST(CollisionChecker, RobotPairsAgreeWithExactPredicates) {
+  Random rng(21);
+  Scene s;
+  s.bounds = {-10, -10, 10, 10};
+  for (int k = 0; k < 2; ++k) {
+    Robot r;
+    r.name = "r" + std::to_string(k);
+    r.shape = randomStarPolygon(rng, {0, 0}, 0.5, 2.0, 9);
+    s.robots.push_back(r);
+  }
+  const CollisionChecker checker(s);
+  int overlaps = 0, mismatches = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const Pose p{rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-M_PI, M_PI)};
+    const Pose q{rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-M_PI, M_PI)};
+    const bool disjoint = checker.robotsDisjoint(0, p, 1, q);
+    const bool exactOverlap = exact::interiorsIntersect(placedRing(checker.shrunkShape(0), p),
+                                                        placedRing(checker.shrunkShape(1), q));
+    overlaps += exactOverlap;
+    mismatches += (disjoint == exactOverlap);
+  }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_GT(overlaps, 500);
+  EXPECT_LT(overlaps, 4500);
+}
+
+TEST(CollisionChecker, ExactContactsAreFreeAndPenetrationIsNot) {
+  Scene s;
+  s.bounds = {0, 0, 10, 10};
+  s.obstacles = {{{4, 4}, {6, 4}, {6, 6}, {4, 6}}};
+  Robot r;
+  r.name = "sq";
+  r.shape = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  s.robots = {r};
+  const CollisionChecker c(s);
+  const double t = s.tolerance();
+  EXPECT_TRUE(c.robotFree(0, {3, 5, 0}));         // edge on edge
+  EXPECT_TRUE(c.robotFree(0, {3, 3, 0}));         // corner on corner
+  EXPECT_TRUE(c.robotFree(0, {1, 1, 0}));         // touching two sides of the bounds
+  EXPECT_TRUE(c.robotFree(0, {3 + 0.5 * t, 5, 0}));  // within tolerance
+  EXPECT_FALSE(c.robotFree(0, {3 + 3 * t, 5, 0}));
+  EXPECT_FALSE(c.robotFree(0, {1 - 3 * t, 5, 0}));   // leaves the bounds
+  EXPECT_FALSE(c.robotFree(0, {5, 5, 0.3}));          // inside the obstacle entirely
+  EXPECT_EQ(c.robotContact(0, {5, 5, 0}).kind, Contact::Kind::Obstacle);
+  EXPECT_EQ(c.robotContact(0, {0.5, 5, 0}).kind, Contact::Kind::Bounds);
+  // A diamond whose tip touches the obstacle's edge.
+  const double d = std::sqrt(2.0);
+  EXPECT_TRUE(c.robotFree(0, {4 - d, 5, M_PI / 4}));
+  EXPECT_FALSE(c.robotFree(0, {4 - d + 3 * t, 5, M_PI / 4}));
+  // Clearance of the real shape = clearance of the shrunk one minus about the tolerance.
+  EXPECT_NEAR(c.robotClearance(0, {2, 5, 0}).distance, 1 + t, 1e-9);
+}
+
+TEST(CollisionChecker, ObstacleInsideRobotCollides) {
+  Scene s;
+  s.bounds = {0, 0, 10, 10};
+  s.obstacles = {{{4.9, 4.9}, {5.1, 4.9}, {5.1, 5.1}, {4.9, 5.1}}};
+  Robot r;
+  r.name = "big";
+  r.shape = {{-2, -2}, {2, -2}, {2, 2}, {-2, 2}};
+  s.robots = {r};
+  const CollisionChecker c(s);
+  EXPECT_FALSE(c.robotFree(0, {5, 5, 0.2}));
+  EXPECT_EQ(c.robotClearance(0, {5, 5, 0.2}).distance, 0.0);
+}
+
+TEST(ShrinkForContacts, RejectsFeaturesBelowTheTolerance) {
+  const Ring sliver = {{0, 0}, {10, 0}, {10, 1e-7}, {0, 2e-7}};
+  EXPECT_TRUE(shrinkForContacts(sliver, 1e-6).error.has_value());
+  const Ring ok = {{0, 0}, {10, 0}, {10, 1}, {0, 1}};
+  const ShrunkShape s = shrinkForContacts(ok, 1e-3);
+  ASSERT_FALSE(s.error);
+  EXPECT_NEAR(s.ring[0].x, 1e-3, 1e-12);
+  EXPECT_NEAR(s.ring[2].y, 1 - 1e-3, 1e-12);
+}
+
+TEST(Exact, RationalAnglesAreCloseAndRotationsExact) {
+  Random rng(2);
+  const exact::Polygon sq = exact::toExact(Ring{{3, 0}, {3, 1}, {-2, 1.5}});
+  for (int i = 0; i < 200; ++i) {
+    const double theta = i < 4 ? std::array{M_PI, -M_PI, M_PI_2, 0.0}[i] : rng.uniform(-7, 7);
+    const exact::RationalAngle a = exact::rationalAngleNear(theta);
+    EXPECT_NEAR(std::remainder(a.radians() - theta, 2 * M_PI), 0.0, 1e-6) << theta;
+    const auto [c, s] = a.cosSin();
+    EXPECT_TRUE(c * c + s * s == 1);  // exact, not approximately
+    const exact::Polygon r = exact::rotated(sq, a);
+    for (size_t k = 0; k < sq.size(); ++k)
+      EXPECT_TRUE(CGAL::squared_distance(r[k], exact::Point(0, 0)) ==
+                  CGAL::squared_distance(sq[k], exact::Point(0, 0)));
+  }
+  // A half turn is expressible exactly (tan(pi/2) is not).
+  const exact::RationalAngle half = exact::rationalAngleNear(M_PI);
+  EXPECT_TRUE(half.half);
+  EXPECT_TRUE(exact::rotated(sq, half)[0] == exact::Point(-3, 0));
+}
+
+TEST(Exact, InteriorPredicateIgnoresTouching) {
+  const Ring a = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  EXPECT_FALSE(exact::interiorsIntersect(a, {{1, 0}, {2, 0}, {2, 1}, {1, 1}}));   // shared edge
+  EXPECT_FALSE(exact::interiorsIntersect(a, {{1, 1}, {2, 1}, {2, 2}, {1, 2}}));   // shared corner
+  EXPECT_TRUE(exact::interiorsIntersect(a, {{0.5, 0.5}, {2, 0.5}, {2, 2}, {0.5, 2}}));
+  EXPECT_TRUE(exact::interiorsIntersect(a, {{0.2, 0.2}, {0.8, 0.2}, {0.5, 0.8}}));  // contained
+}

@@ -1,0 +1,71 @@
+// SVG pictures: well-formed, drawn where the scene says, readable by a standard renderer.
+#include <gtest/gtest.h>
+
+#include "Support.h"
+#include "render/SvgRenderer.h"
+#include "scene/SceneIO.h"
+
+using namespace mms;
+using namespace mms::test;
+
+namespace {
+size_t count(const std::string& hay, const std::string& needle) {
+  size_t n = 0;
+  for (size_t p = hay.find(needle); p != std::string::npos; p = hay.find(needle, p + 1)) ++n;
+  return n;
+}
+}  // namespace
+
+TEST(Render, SceneAloneHasObstaclesStartsAndGoals) {
+  const Scene s = loadScene(scenario("two-robots/niche-swap.json"));
+  const std::string svg = renderSvg(s, nullptr);
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_NE(svg.find("<g id=\"obstacles\""), std::string::npos);
+  EXPECT_EQ(count(svg, "<polygon"), s.obstacles.size() + 2 * s.robots.size());
+  EXPECT_EQ(svg.find("animateTransform"), std::string::npos);
+  // The right robot's start pose (11, 0.65) shifts its first vertex to (10.5, 0.15).
+  EXPECT_NE(svg.find("10.5,0.15"), std::string::npos);
+}
+
+TEST(Render, PathAddsGhostsTracesAndAnimation) {
+  const Scene s = loadScene(scenario("one-robot/bar-slot.json"));
+  const Path p = loadPath(scenario("one-robot/bar-slot.path.json"), s);
+  SvgOptions o;
+  o.ghosts = 10;
+  const std::string svg = renderSvg(s, &p, o);
+  EXPECT_EQ(count(svg, "<animateTransform"), 2u);  // translate and rotate of the one robot
+  EXPECT_NE(svg.find("values=\"-6 0;-6 0;6 0;6 0\""), std::string::npos);
+  EXPECT_NE(svg.find("values=\"90;0;0;90\""), std::string::npos);
+  EXPECT_NE(svg.find("<polyline"), std::string::npos);
+  EXPECT_EQ(count(svg, "<polygon"), s.obstacles.size() + 2 + (o.ghosts - 1) + 1);
+}
+
+TEST(Render, CommandWritesAnSvgThatRsvgConvertRenders) {
+  TempDir dir;
+  const std::string svg = dir.path("out.svg"), png = dir.path("out.png");
+  Outcome r = runMms("render " + quote(scenario("translating/cup.json")) + " " +
+              quote(scenario("translating/cup.path.json")) + " -o " + quote(svg));
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = runCommand("rsvg-convert " + quote(svg) + " -o " + quote(png));
+  ASSERT_EQ(r.code, 0) << "rsvg-convert (librsvg2-bin, installed by scripts/setup.sh): " << r.err;
+  const std::string bytes = readFile(png);
+  ASSERT_GT(bytes.size(), 1000u);
+  EXPECT_EQ(bytes.substr(1, 3), "PNG");
+}
+
+TEST(Render, UnwritableOutputLeavesNoFileAndExitsTwo) {
+  TempDir dir;
+  const Outcome r = runMms("render " + quote(scenario("translating/cup.json")) + " -o " +
+                    quote(dir.path("no/such/dir/out.svg")));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("out.svg: (output): cannot create"), std::string::npos) << r.err;
+}
+
+TEST(Render, BadPathLeavesNoOutputFile) {
+  TempDir dir;
+  const std::string out = dir.path("out.svg");
+  const Outcome r = runMms("render " + quote(scenario("translating/cup.json")) + " " +
+                    quote(dir.file("p.json", "{}")) + " -o " + quote(out));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_FALSE(std::filesystem::exists(out));
+}

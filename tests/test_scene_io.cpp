@@ -1,0 +1,290 @@
+// Scene and path loading: every class of bad input gets exit code 2 and one line naming the
+// file, the JSON location and the problem.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "Support.h"
+#include "scene/Errors.h"
+#include "scene/PathIO.h"
+#include "scene/SceneIO.h"
+#include "geometry/PolygonOps.h"
+#include <functional>
+
+using nlohmann::json;
+using namespace mms;
+using namespace mms::test;
+
+namespace {
+
+json square(double x0, double y0, double s) {
+  return json::array({{x0, y0}, {x0 + s, y0}, {x0 + s, y0 + s}, {x0, y0 + s}});
+}
+
+// A valid two-robot scene; each bad-input case breaks one thing in it.
+json baseScene() {
+  return {{"format", "mms-scene/1"},
+          {"name", "base"},
+          {"bounds", {0, 0, 10, 10}},
+          {"obstacles", json::array({square(4, 4, 2)})},
+          {"robots",
+           json::array({{{"name", "a"}, {"shape", square(-0.5, -0.5, 1)}, {"start", {1, 1, 0}},
+                         {"goal", {9, 9, 0}}, {"motion", "rigid"}},
+                        {{"name", "b"}, {"shape", square(-0.5, -0.5, 1)}, {"start", {9, 1, 0}},
+                         {"goal", {1, 9, 1.0}}}})}};
+}
+
+struct BadCase {
+  const char* label;
+  std::function<void(json&)> mutate;  // empty: `text` is the whole file
+  const char* text;
+  const char* location;  // expected in the message after "FILE: "
+  const char* problem;   // expected substring of the message
+};
+
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.label; }
+
+std::string deepJson(int depth) {
+  return std::string(depth, '[') + std::string(depth, ']');
+}
+
+}  // namespace
+
+class BadScene : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadScene, ExitsTwoWithOneLineNamingFileFieldAndProblem) {
+  const BadCase& c = GetParam();
+  TempDir dir;
+  std::string content;
+  if (c.mutate) {
+    json j = baseScene();
+    c.mutate(j);
+    content = j.dump();
+  } else {
+    content = c.text;
+  }
+  const std::string file = dir.file("scene.json", content);
+  const Outcome r = runMms("validate " + quote(file));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.out, "");
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  EXPECT_EQ(r.err.rfind(file + ": " + c.location + ": ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(c.problem), std::string::npos) << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Classes, BadScene,
+    ::testing::Values(
+        BadCase{"not_json", {}, "{\"format\": mms", "(document)", "not valid JSON"},
+        BadCase{"empty_file", {}, "", "(document)", "not valid JSON"},
+        BadCase{"not_utf8", {}, "{\"format\": \"\xff\xfe\"}", "(document)", "not valid JSON"},
+        BadCase{"top_not_object", {}, "[1,2]", "(document)", "expected an object, found an array"},
+        BadCase{"missing_format", [](json& j) { j.erase("format"); }, nullptr, "format", "missing"},
+        BadCase{"wrong_format", [](json& j) { j["format"] = "mms-scene/9"; }, nullptr, "format",
+                "unsupported format 'mms-scene/9'"},
+        BadCase{"format_type", [](json& j) { j["format"] = 1; }, nullptr, "format",
+                "expected a string, found a number"},
+        BadCase{"unknown_field", [](json& j) { j["obstacle"] = json::array(); }, nullptr, "obstacle",
+                "unknown field"},
+        BadCase{"missing_bounds", [](json& j) { j.erase("bounds"); }, nullptr, "bounds", "missing"},
+        BadCase{"bounds_short", [](json& j) { j["bounds"] = {0, 0, 10}; }, nullptr, "bounds",
+                "expected 4 elements, found 3"},
+        BadCase{"bounds_type", [](json& j) { j["bounds"] = "big"; }, nullptr, "bounds",
+                "expected an array, found a string"},
+        BadCase{"bounds_element_type", [](json& j) { j["bounds"][2] = true; }, nullptr, "bounds[2]",
+                "expected a number, found a boolean"},
+        BadCase{"bounds_inverted", [](json& j) { j["bounds"] = {10, 0, 0, 10}; }, nullptr, "bounds",
+                "inverted"},
+        BadCase{"bounds_empty", [](json& j) { j["bounds"] = {0, 5, 10, 5}; }, nullptr, "bounds",
+                "inverted or empty"},
+        BadCase{"huge_number", [](json& j) { j["bounds"][2] = 1e300; }, nullptr, "bounds[2]",
+                "out of range"},
+        BadCase{"polygon_two_vertices", [](json& j) { j["obstacles"][0] = {{0, 0}, {1, 1}}; },
+                nullptr, "obstacles[0]", "expected at least 3 elements, found 2"},
+        BadCase{"point_three_coords", [](json& j) { j["obstacles"][0][1] = {1, 1, 1}; }, nullptr,
+                "obstacles[0][1]", "expected 2 elements"},
+        BadCase{"zero_area", [](json& j) { j["obstacles"][0] = {{0, 0}, {1, 1}, {2, 2}, {3, 3}}; },
+                nullptr, "obstacles[0]", "zero area"},
+        BadCase{"repeated_vertex",
+                [](json& j) { j["obstacles"][0] = {{4, 4}, {6, 4}, {6, 6}, {6, 4}, {4, 6}}; },
+                nullptr, "obstacles[0]", "repeated vertex (vertices 1 and 3 coincide)"},
+        BadCase{"self_intersecting",
+                [](json& j) { j["robots"][0]["shape"] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}}; },
+                nullptr, "robots[0].shape", "polygon self-intersects (edges 1 and 3)"},
+        BadCase{"fold_back",
+                [](json& j) { j["obstacles"][0] = {{4, 4}, {6, 4}, {5, 4}, {5, 6}}; },
+                nullptr, "obstacles[0]", "self-intersects"},
+        BadCase{"no_robots", [](json& j) { j["robots"] = json::array(); }, nullptr, "robots",
+                "expected at least 1 elements, found 0"},
+        BadCase{"robot_not_object", [](json& j) { j["robots"][1] = 7; }, nullptr, "robots[1]",
+                "expected an object, found a number"},
+        BadCase{"missing_shape", [](json& j) { j["robots"][0].erase("shape"); }, nullptr,
+                "robots[0].shape", "missing"},
+        BadCase{"start_short", [](json& j) { j["robots"][0]["start"] = {1, 1}; }, nullptr,
+                "robots[0].start", "expected 3 elements, found 2"},
+        BadCase{"huge_angle", [](json& j) { j["robots"][0]["goal"][2] = 1e9; }, nullptr,
+                "robots[0].goal[2]", "out of range"},
+        BadCase{"start_outside_bounds", [](json& j) { j["robots"][0]["start"] = {0.2, 1, 0}; },
+                nullptr, "robots[0].start", "robot 'a' is not inside the bounds"},
+        BadCase{"robot_larger_than_bounds",
+                [](json& j) { j["robots"][0]["shape"] = square(-6, -6, 12); }, nullptr,
+                "robots[0].start", "not inside the bounds"},
+        BadCase{"start_in_obstacle", [](json& j) { j["robots"][0]["start"] = {4.2, 5, 0}; }, nullptr,
+                "robots[0].start", "robot 'a' collides with obstacles[0]"},
+        BadCase{"goal_in_obstacle", [](json& j) { j["robots"][1]["goal"] = {5, 6.3, 0.3}; }, nullptr,
+                "robots[1].goal", "robot 'b' collides with obstacles[0]"},
+        BadCase{"robots_overlap_at_goal", [](json& j) { j["robots"][1]["goal"] = {8.5, 8.6, 0}; },
+                nullptr, "robots[1].goal", "robot 'b' collides with robot 'a'"},
+        BadCase{"duplicate_names", [](json& j) { j["robots"][1]["name"] = "a"; }, nullptr,
+                "robots[1].name", "duplicate robot name 'a'"},
+        BadCase{"empty_name", [](json& j) { j["robots"][1]["name"] = ""; }, nullptr,
+                "robots[1].name", "empty"},
+        BadCase{"unknown_motion", [](json& j) { j["robots"][0]["motion"] = "fly"; }, nullptr,
+                "robots[0].motion", "unknown motion kind 'fly'"},
+        BadCase{"translate_goal_angle", [](json& j) { j["robots"][1]["motion"] = "translate"; },
+                nullptr, "robots[1].goal[2]", "a translate robot keeps its angle"},
+        BadCase{"robot_unknown_field", [](json& j) { j["robots"][0]["speed"] = 3; }, nullptr,
+                "robots[0].speed", "unknown field"}),
+    [](const auto& info) { return std::string(info.param.label); });
+
+// Cases whose text is built at run time.
+TEST(BadSceneText, DeepNestingAndOverflow) {
+  TempDir dir;
+  {
+    const std::string f = dir.file("deep.json", deepJson(100000));
+    const Outcome r = runMms("validate " + quote(f));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("nested deeper than 64 levels"), std::string::npos) << r.err;
+  }
+  {
+    json j = baseScene();
+    std::string text = j.dump();
+    const std::string from = "\"bounds\":[0,0,10,10]";
+    ASSERT_NE(text.find(from), std::string::npos);
+    text.replace(text.find(from), from.size(), "\"bounds\":[0,0,1e999,10]");
+    const std::string f = dir.file("overflow.json", text);
+    const Outcome r = runMms("validate " + quote(f));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+    EXPECT_NE(r.err.find("not valid JSON: number overflow parsing '1e999'"), std::string::npos) << r.err;
+  }
+}
+
+TEST(BadSceneText, UnreadableFiles) {
+  TempDir dir;
+  Outcome r = runMms("validate " + quote(dir.path("missing.json")));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("missing.json: (file): cannot open for reading"), std::string::npos) << r.err;
+  r = runMms("validate " + quote(dir.path("")));  // a directory
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+}
+
+TEST(SceneLoad, NormalisesOrientationAndAcceptsTouchingStart) {
+  json j = baseScene();
+  // Clockwise obstacle, and robot a's start touching the obstacle's left side exactly.
+  j["obstacles"][0] = {{4, 4}, {4, 6}, {6, 6}, {6, 4}};
+  j["robots"][0]["start"] = {3.5, 5, 0};
+  const Scene s = parseScene(j, "inline");
+  ASSERT_EQ(s.obstacles.size(), 1u);
+  EXPECT_GT(signedArea2(s.obstacles[0]), 0);
+  EXPECT_EQ(s.robots[0].start.x, 3.5);
+  EXPECT_EQ(s.robots[1].motion, Motion::Rigid);  // default
+  // Pushed in by ten tolerances it collides.
+  j["robots"][0]["start"] = {3.5 + 10 * s.tolerance(), 5, 0};
+  EXPECT_THROW(parseScene(j, "inline"), InputError);
+}
+
+TEST(SceneLoad, RoundTripsThroughSave) {
+  TempDir dir;
+  const Scene s = parseScene(baseScene(), "inline");
+  const std::string f = dir.path("saved.json");
+  saveScene(s, f);
+  const Scene t = loadScene(f);
+  EXPECT_EQ(t.name, s.name);
+  ASSERT_EQ(t.robots.size(), 2u);
+  EXPECT_EQ(t.robots[1].goal.theta, 1.0);
+  EXPECT_EQ(t.obstacles[0].size(), 4u);
+}
+
+TEST(ValidateCommand, PrintsSummaryForBundledScenes) {
+  for (const char* s : {"one-robot/bar-slot.json", "two-robots/niche-swap.json", "translating/cup.json"}) {
+    const Outcome r = runMms("validate " + quote(scenario(s)));
+    EXPECT_EQ(r.code, 0) << s << ": " << r.err;
+    EXPECT_NE(r.out.find("valid mms-scene/1 scene"), std::string::npos) << r.out;
+  }
+}
+
+// ---- paths ----
+
+class BadPath : public ::testing::Test {
+ protected:
+  TempDir dir;
+  std::string scene = scenario("two-robots/niche-swap.json");
+  json base = json::parse(readFile(scenario("two-robots/niche-swap.path.json")));
+  Outcome check(const json& path) { return runMms("check " + quote(scene) + " " + quote(dir.file("p.json", path.dump()))); }
+  void expectBad(const json& path, const std::string& where, const std::string& problem) {
+    const Outcome r = check(path);
+    EXPECT_EQ(r.code, 2) << r.err << r.out;
+    EXPECT_NE(r.err.find(": " + where + ": "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(problem), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  }
+};
+
+TEST_F(BadPath, EachProblemIsNamed) {
+  json p = base;
+  p["format"] = "mms-path/2";
+  expectBad(p, "format", "unsupported format");
+  p = base;
+  p["scene"] = "other";
+  expectBad(p, "scene", "path is for scene 'other', not 'niche-swap'");
+  p = base;
+  p["robots"] = {"right", "left"};
+  expectBad(p, "robots[0]", "expected robot 'left'");
+  p = base;
+  p["robots"] = {"left"};
+  expectBad(p, "robots", "expected 2 elements, found 1");
+  p = base;
+  p["waypoints"] = json::array();
+  expectBad(p, "waypoints", "expected at least 1 elements");
+  p = base;
+  p["waypoints"][2] = {1, 0.65, 0, 4.8, 2.2};
+  expectBad(p, "waypoints[2]", "expected 6 elements, found 5");
+  p = base;
+  p["waypoints"][1][4] = "x";
+  expectBad(p, "waypoints[1][4]", "expected a number, found a string");
+  p = base;
+  p.erase("waypoints");
+  expectBad(p, "waypoints", "missing");
+  const Outcome r = runMms("check " + quote(scene) + " " + quote(dir.file("bad.json", "not json")));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("not valid JSON"), std::string::npos);
+}
+
+TEST_F(BadPath, ExtraKeysSurviveRoundTrip) {
+  const Scene s = loadScene(scene);
+  json p = base;
+  p["planner"] = "hand";
+  Path path = parsePath(p, "inline", s);
+  EXPECT_EQ(path.extra["planner"], "hand");
+  EXPECT_EQ(pathToJson(path, s)["planner"], "hand");
+  EXPECT_EQ(pathToJson(path, s)["waypoints"], base["waypoints"]);
+}
+
+TEST(Cli, UsageErrorsExitTwoWithOneLine) {
+  for (const char* args : {"", "frobnicate", "check onlyone", "render x.json", "validate a b c",
+                           "render --width -3 a.json -o x.svg"}) {
+    const Outcome r = runMms(args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << args << ": " << r.err;
+  }
+  const Outcome help = runMms("--help");
+  EXPECT_EQ(help.code, 0);
+  for (const char* c : {"validate", "check", "render"}) EXPECT_NE(help.out.find(c), std::string::npos);
+  const Outcome sub = runMms("check --help");
+  EXPECT_EQ(sub.code, 0);
+  EXPECT_NE(sub.out.find("--max-evaluations"), std::string::npos);
+}
