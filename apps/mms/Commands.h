@@ -26,3 +26,16 @@ struct RenderArgs {
 int render(const RenderArgs& a);
 
 }  // namespace mms::cli
+
+namespace mms::cli {
+
+struct PlanArgs {
+  std::string scene, output, svg;
+  uint64_t seed = 1;
+  double timeLimit = 60;
+  size_t nTheta = 16, nLines = 64;
+  bool quiet = false;
+};
+int plan(const PlanArgs& a);
+
+}  // namespace mms::cli

@@ -57,6 +57,26 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 1000));
   renderCmd->add_flag("--no-animation", ra.noAnimation, "Leave out the animated robot");
 
+  PlanArgs pa;
+  auto* planCmd = app.add_subcommand(
+      "plan",
+      "Plan a certified motion with MMS (manifold samples: fixed-angle slices, fixed-position\n"
+      "lines). Exit 0 path found and certified, 1 no path within the time limit, 2 bad input");
+  planCmd->add_option("SCENE", pa.scene, "Scene file")->required();
+  planCmd->add_option("-o,--output", pa.output, "Write the path (mms-path/1) here");
+  planCmd->add_option("--svg", pa.svg, "Write an animated SVG of the scene and path here");
+  planCmd->add_option("--seed", pa.seed, "Random seed (same seed, same path)")->capture_default_str();
+  planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e6));
+  planCmd->add_option("--n-theta", pa.nTheta, "Slices (fixed angles) in the first round; doubles each round")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  planCmd->add_option("--n-lines", pa.nLines, "Lines (fixed positions) in the first round; doubles each round")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10000000));
+  planCmd->add_flag("-q,--quiet", pa.quiet, "No progress messages on stderr");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -74,6 +94,7 @@ int main(int argc, char** argv) {
     if (*validateCmd) return validate(va);
     if (*checkCmd) return check(ca);
     if (*renderCmd) return render(ra);
+    if (*planCmd) return plan(pa);
   } catch (const mms::InputError& e) {
     std::cerr << oneLine(e.what()) << "\n";
     return 2;

@@ -179,10 +179,20 @@ PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker, c
                           " at waypoint " + std::to_string(j));
   }
 
-  Certifier certifier(scene, checker, settings, r);
-  if (w.size() == 1) {
-    if (!certifier.segment(0, w[0], w[0])) return r;
+  const PathCheckResult motion = checkMotion(scene, checker, w, settings);
+  return motion;
+}
+
+PathCheckResult checkMotion(const Scene& scene, const CollisionChecker& checker,
+                            const std::vector<Config>& w, const PathCheckSettings& settings) {
+  PathCheckResult r;
+  r.minClearance = std::numeric_limits<double>::infinity();
+  if (w.empty()) {
+    r.reason = "the path has no waypoints";
+    return r;
   }
+  Certifier certifier(scene, checker, settings, r);
+  if (w.size() == 1 && !certifier.segment(0, w[0], w[0])) return r;
   for (size_t j = 0; j + 1 < w.size(); ++j)
     if (!certifier.segment(j, w[j], w[j + 1])) return r;
   r.ok = true;

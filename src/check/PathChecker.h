@@ -33,7 +33,13 @@ struct PathCheckResult {
   double rotation = 0;      // radians, summed over robots
 };
 
+/// Checks that the path starts at the scene's start, ends at its goal, keeps translate-only
+/// robots at their angle, and is free as a continuous motion.
 PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker, const Path& path,
                           const PathCheckSettings& settings = {});
+
+/// Only the continuous-motion part: every segment between consecutive waypoints is free.
+PathCheckResult checkMotion(const Scene& scene, const CollisionChecker& checker,
+                            const std::vector<Config>& waypoints, const PathCheckSettings& settings = {});
 
 }  // namespace mms

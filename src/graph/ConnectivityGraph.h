@@ -1,0 +1,35 @@
+#pragma once
+// The connectivity graph of MMS: one node per free-space cell, one edge per pair of cells
+// (of manifolds of different families) that intersect. Boost Graph Library underneath.
+#include <boost/graph/adjacency_list.hpp>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace mms {
+
+class ConnectivityGraph {
+ public:
+  enum class Kind : uint8_t { SliceCell, LineArc };
+  struct Node {
+    Kind kind;
+    uint32_t manifold;  // slice or line index
+    uint32_t cell;      // FSC index within it
+  };
+
+  size_t addNode(const Node& n);
+  void addEdge(size_t a, size_t b);
+  const Node& node(size_t v) const { return nodes_[v]; }
+  size_t nodeCount() const { return nodes_.size(); }
+  size_t edgeCount() const { return boost::num_edges(g_); }
+
+  /// Fewest-cells path from `from` to `to` (inclusive), if they are connected.
+  std::optional<std::vector<size_t>> path(size_t from, size_t to) const;
+
+ private:
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+  Graph g_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace mms

@@ -1,0 +1,165 @@
+#include "manifolds/Slice.h"
+
+#include <CGAL/Arr_landmarks_point_location.h>
+#include <CGAL/Arr_trapezoid_ric_point_location.h>
+#include <CGAL/Arr_walk_along_line_point_location.h>
+#include <CGAL/Polygon_set_2.h>
+#include <CGAL/minkowski_sum_2.h>
+
+#include <unordered_map>
+#include <variant>
+
+#include "geometry/PolygonOps.h"
+
+namespace mms {
+
+using exact::FT;
+using exact::Kernel;
+using exact::Point;
+using exact::Polygon;
+using PolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
+using PolygonSet = CGAL::Polygon_set_2<Kernel>;
+using Arrangement = PolygonSet::Arrangement_2;
+
+struct SliceWorld::Impl {
+  Box bounds;
+  Polygon robot;                 // exact, counter-clockwise, robot frame
+  std::vector<Polygon> obstacles;  // exact, counter-clockwise
+  std::vector<Box> obstacleBoxes;
+};
+
+SliceWorld::SliceWorld(const Scene& scene, size_t robot, std::vector<Ring> extraObstacles)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->bounds = scene.bounds;
+  impl_->robot = exact::toExact(scene.robots[robot].shape);
+  auto add = [&](const Ring& r) {
+    impl_->obstacles.push_back(exact::toExact(r));
+    if (impl_->obstacles.back().is_clockwise_oriented()) impl_->obstacles.back().reverse_orientation();
+    impl_->obstacleBoxes.push_back(boundingBox(r));
+  };
+  for (const Ring& o : scene.obstacles) add(o);
+  for (const Ring& o : extraObstacles) add(o);
+}
+SliceWorld::~SliceWorld() = default;
+
+namespace {
+
+using Walk = CGAL::Arr_walk_along_line_point_location<Arrangement>;
+using Trapezoid = CGAL::Arr_trapezoid_ric_point_location<Arrangement>;
+using Landmarks = CGAL::Arr_landmarks_point_location<Arrangement>;
+
+Ring ccbRing(Arrangement::Ccb_halfedge_const_circulator first) {
+  Ring r;
+  auto c = first;
+  do {
+    r.push_back(exact::toDouble(c->source()->point()));
+  } while (++c != first);
+  return r;
+}
+
+double ringsArea(const std::vector<Ring>& rings) {
+  double a = 0;
+  for (const Ring& r : rings) a += 0.5 * signedArea2(r);  // holes are clockwise: negative
+  return a;
+}
+
+}  // namespace
+
+struct Slice::Impl {
+  PolygonSet free;
+  std::variant<std::monostate, Walk, Trapezoid, Landmarks> locator;
+  std::unordered_map<const void*, int> faceIndex;
+  std::vector<std::vector<Ring>> cells;
+  std::vector<double> areas;
+};
+
+Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLocation strategy)
+    : impl_(std::make_unique<Impl>()), angle_(angle), theta_(angle.radians()) {
+  const SliceWorld::Impl& w = world.impl();
+  const auto [c, s] = angle.cosSin();
+  // -R_theta: the robot rotated, then reflected about its reference point (a half turn, so
+  // the orientation stays counter-clockwise).
+  Polygon neg;
+  FT minX, maxX, minY, maxY;
+  bool first = true;
+  for (const Point& v : w.robot.vertices()) {
+    const FT x = c * v.x() - s * v.y(), y = s * v.x() + c * v.y();
+    neg.push_back(Point(-x, -y));
+    if (first || x < minX) minX = x;
+    if (first || x > maxX) maxX = x;
+    if (first || y < minY) minY = y;
+    if (first || y > maxY) maxY = y;
+    first = false;
+  }
+  // Reference points that keep the rotated robot inside the bounds.
+  const FT xlo = FT(w.bounds.xmin) - minX, xhi = FT(w.bounds.xmax) - maxX;
+  const FT ylo = FT(w.bounds.ymin) - minY, yhi = FT(w.bounds.ymax) - maxY;
+  if (!(xlo < xhi && ylo < yhi)) return;  // the robot does not fit at this angle
+  Polygon region;
+  region.push_back(Point(xlo, ylo));
+  region.push_back(Point(xhi, ylo));
+  region.push_back(Point(xhi, yhi));
+  region.push_back(Point(xlo, yhi));
+
+  // Only sums that can reach the region matter; boxes in doubles with a margin decide that.
+  const Box negBox = boundingBox(exact::toDouble(neg));
+  const Box regionBox{CGAL::to_double(xlo), CGAL::to_double(ylo), CGAL::to_double(xhi), CGAL::to_double(yhi)};
+  std::vector<PolygonWithHoles> sums;
+  for (size_t i = 0; i < w.obstacles.size(); ++i) {
+    const Box& o = w.obstacleBoxes[i];
+    const double m = 1e-9 * (1 + std::fabs(o.xmax) + std::fabs(o.ymax) + std::fabs(o.xmin) + std::fabs(o.ymin));
+    const Box sumBox{o.xmin + negBox.xmin - m, o.ymin + negBox.ymin - m, o.xmax + negBox.xmax + m,
+                     o.ymax + negBox.ymax + m};
+    if (!sumBox.overlaps(regionBox)) continue;
+    sums.push_back(CGAL::minkowski_sum_2(w.obstacles[i], neg));
+  }
+  impl_->free = PolygonSet(region);
+  if (!sums.empty()) {
+    PolygonSet forbidden;
+    forbidden.join(sums.begin(), sums.end());
+    impl_->free.difference(forbidden);
+  }
+
+  const Arrangement& arr = impl_->free.arrangement();
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (!f->contained() || f->is_unbounded()) continue;
+    std::vector<Ring> rings{ccbRing(f->outer_ccb())};
+    for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) rings.push_back(ccbRing(*h));
+    impl_->faceIndex[&*f] = int(impl_->cells.size());
+    impl_->areas.push_back(ringsArea(rings));
+    impl_->cells.push_back(std::move(rings));
+  }
+  switch (strategy) {
+    case PointLocation::Walk: impl_->locator.emplace<Walk>(arr); break;
+    case PointLocation::Trapezoid: impl_->locator.emplace<Trapezoid>(arr); break;
+    case PointLocation::Landmarks: impl_->locator.emplace<Landmarks>(arr); break;
+  }
+}
+
+Slice::~Slice() = default;
+Slice::Slice(Slice&&) noexcept = default;
+Slice& Slice::operator=(Slice&&) noexcept = default;
+
+size_t Slice::fscCount() const { return impl_->cells.size(); }
+const std::vector<Ring>& Slice::cell(size_t i) const { return impl_->cells[i]; }
+double Slice::area(size_t i) const { return impl_->areas[i]; }
+
+int Slice::locate(Vec2 p) const {
+  if (impl_->cells.empty()) return -1;
+  const Point q = exact::toExact(p);
+  int result = -1;
+  std::visit(
+      [&](const auto& pl) {
+        if constexpr (!std::is_same_v<std::decay_t<decltype(pl)>, std::monostate>) {
+          const auto obj = pl.locate(q);
+          if (const auto* f = boost::get<Arrangement::Face_const_handle>(&obj)) {
+            auto it = impl_->faceIndex.find(&**f);
+            if (it != impl_->faceIndex.end()) result = it->second;
+          }
+        }
+      },
+      impl_->locator);
+  return result;
+}
+
+}  // namespace mms

@@ -1,0 +1,63 @@
+#pragma once
+// A horizontal slice of the C-space of one robot: the robot's angle is fixed, its reference
+// point moves. The free space of the reference point is computed exactly (CGAL, Epeck): the
+// bounds' inner region minus the union of the Minkowski sums O (+) (-R_theta) of every
+// obstacle with the rotated, reflected robot. Its connected faces are the slice's free-space
+// cells (FSCs): polygons with holes.
+//
+// Salzman, Hemmer, Raveh, Halperin: "Motion planning via manifold samples", Algorithmica 2013;
+// Salzman, Hemmer, Halperin: "On the power of manifold samples in exploring configuration
+// spaces and the dimensionality of narrow passages" (the paper in ../shared/paper).
+#include <memory>
+#include <vector>
+
+#include "geometry/Exact.h"
+#include "scene/Scene.h"
+
+namespace mms {
+
+/// Point-location strategies of CGAL's arrangement package (bench/bench_manifolds.cpp
+/// measures them).
+enum class PointLocation { Walk, Trapezoid, Landmarks };
+
+/// What every slice of one robot shares: the obstacles and the robot in exact form.
+class SliceWorld {
+ public:
+  SliceWorld(const Scene& scene, size_t robot, std::vector<Ring> extraObstacles = {});
+  ~SliceWorld();
+  SliceWorld(const SliceWorld&) = delete;
+  SliceWorld& operator=(const SliceWorld&) = delete;
+
+  struct Impl;
+  const Impl& impl() const { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+class Slice {
+ public:
+  Slice(const SliceWorld& world, const exact::RationalAngle& angle,
+        PointLocation strategy = PointLocation::Walk);
+  ~Slice();
+  Slice(Slice&&) noexcept;
+  Slice& operator=(Slice&&) noexcept;
+
+  const exact::RationalAngle& angle() const { return angle_; }
+  double theta() const { return theta_; }
+  size_t fscCount() const;
+  /// The FSC whose interior contains p, or -1 (p forbidden or on a cell's boundary).
+  int locate(Vec2 p) const;
+  /// FSC i as rings in doubles: its outer boundary (counter-clockwise) then its holes.
+  const std::vector<Ring>& cell(size_t i) const;
+  /// Area of FSC i (doubles), e.g. to sample points in proportion to it.
+  double area(size_t i) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  exact::RationalAngle angle_;
+  double theta_ = 0;
+};
+
+}  // namespace mms

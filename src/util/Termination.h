@@ -1,0 +1,35 @@
+#pragma once
+// When a long computation must stop: a deadline, and an optional flag set from outside (e.g.
+// a SIGINT handler). Planners check it between manifolds.
+#include <atomic>
+#include <chrono>
+
+namespace mms {
+
+class Termination {
+ public:
+  using Clock = std::chrono::steady_clock;
+  explicit Termination(double seconds, const std::atomic<bool>* cancel = nullptr)
+      : deadline_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                     std::chrono::duration<double>(seconds))),
+        cancel_(cancel) {}
+  bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+  bool operator()() const { return cancelled() || Clock::now() >= deadline_; }
+
+ private:
+  Clock::time_point deadline_;
+  const std::atomic<bool>* cancel_;
+};
+
+/// Seconds since construction, for phase timings.
+class Stopwatch {
+ public:
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace mms
