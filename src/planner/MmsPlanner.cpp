@@ -112,7 +112,8 @@ std::vector<Config> MmsPlanner::motion(const std::vector<size_t>& nodes, const P
     if (n.kind == ConnectivityGraph::Kind::LineArc) {
       const Arc& arc = lines_[n.manifold].arcs()[n.cell];
       const double target = i + 1 < nodes.size() ? slices_[graph_.node(nodes[i + 1]).manifold].theta() : goal.theta;
-      theta += arc.unwrap(target) - arc.unwrap(theta);
+      // Inside a partial arc the direction is forced; on a full circle take the short way.
+      theta += arc.full() ? std::remainder(target - theta, 2 * M_PI) : arc.unwrap(target) - arc.unwrap(theta);
       w.push_back({at.x, at.y, theta});
     } else {
       const Slice& s = slices_[n.manifold];

@@ -1,0 +1,207 @@
+// Slice and line free-space cells against an independent reference: the collision checker
+// sampled inside, just inside and just outside every cell.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "Support.h"
+#include "geometry/CollisionChecker.h"
+#include "geometry/PolygonOps.h"
+#include "manifolds/Line.h"
+#include "manifolds/Slice.h"
+#include "scene/Generators.h"
+#include "scene/SceneIO.h"
+
+using namespace mms;
+using namespace mms::test;
+
+namespace {
+
+Scene randomScene(uint64_t seed) {
+  RandomPolygonsSettings st;
+  st.seed = seed;
+  st.obstacles = 12;
+  st.obstacleVertices = 7;
+  st.robotVertices = 8;
+  st.extent = 20;
+  return parseScene(sceneToJson(randomPolygonsScene(st)), "generated");
+}
+
+// The robot's own shape (not shrunk by the tolerance) leaves the bounds or shares a point
+// with an obstacle.
+bool trueShapeOverlaps(const Scene& s, const Pose& pose) {
+  Ring placed;
+  transformRing(s.robots[0].shape, pose, placed);
+  const Box box = boundingBox(placed);
+  if (!s.bounds.contains(box)) return true;
+  for (const Ring& o : s.obstacles)
+    if (ringsIntersect(placed, box, o, boundingBox(o))) return true;
+  return false;
+}
+
+}  // namespace
+
+class SliceVsChecker : public ::testing::TestWithParam<uint64_t> {};
+
+TEST_P(SliceVsChecker, CellsAreFreeAndTheirOutsideIsNot) {
+  const Scene s = randomScene(GetParam());
+  const CollisionChecker checker(s);
+  const SliceWorld world(s, 0);
+  Random rng(GetParam() * 7 + 1);
+  const double eps = 1e-4 * std::max(s.bounds.width(), s.bounds.height());  // 100 tolerances
+  size_t inside = 0, outside = 0;
+  for (int k = 0; k < 4; ++k) {
+    const Slice slice(world, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
+    const double theta = slice.theta();
+    ASSERT_GT(slice.fscCount(), 0u);
+    // Uniform points: a point in a cell is a free placement.
+    for (int i = 0; i < 2000; ++i) {
+      const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax), rng.uniform(s.bounds.ymin, s.bounds.ymax)};
+      if (slice.locate(p) >= 0) {
+        ++inside;
+        EXPECT_TRUE(checker.robotFree(0, {p.x, p.y, theta})) << p.x << "," << p.y;
+      }
+    }
+    // Boundary edges: a step inside is in the cell and free; a step outside is forbidden
+    // (unless it lands in another cell, which only happens where two cells nearly touch).
+    for (size_t c = 0; c < slice.fscCount(); ++c)
+      for (const Ring& ring : slice.cell(c))
+        for (size_t j = 0, jp = ring.size() - 1; j < ring.size(); jp = j++) {
+          const Vec2 a = ring[jp], b = ring[j], e = b - a;
+          const double len = norm(e);
+          if (len < 10 * eps) continue;
+          const Vec2 out = (1.0 / len) * Vec2{e.y, -e.x};  // the cell lies to the left
+          const Vec2 m = 0.5 * (a + b);
+          const Vec2 pin = m - eps * out, pout = m + eps * out;
+          EXPECT_EQ(slice.locate(pin), int(c));
+          EXPECT_TRUE(checker.robotFree(0, {pin.x, pin.y, theta}));
+          if (slice.locate(pout) < 0) {
+            ++outside;
+            EXPECT_FALSE(checker.robotFree(0, {pout.x, pout.y, theta})) << "edge of cell " << c;
+          }
+        }
+  }
+  EXPECT_GT(inside, 500u);
+  EXPECT_GT(outside, 100u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, SliceVsChecker, ::testing::Values(1, 2, 3));
+
+TEST(Slice, TooLargeRobotHasNoCells) {
+  Scene s = loadScene(scenario("one-robot/bar-slot.json"));
+  s.bounds = {-2.9, -10, 2.9, 10};  // the 6-long bar fits only upright
+  s.obstacles.clear();
+  const SliceWorld world(s, 0);
+  EXPECT_EQ(Slice(world, exact::rationalAngleNear(0.0)).fscCount(), 0u);
+  EXPECT_EQ(Slice(world, exact::rationalAngleNear(M_PI / 2)).fscCount(), 1u);
+}
+
+TEST(Slice, PointLocationStrategiesAgree) {
+  const Scene s = randomScene(4);
+  const SliceWorld world(s, 0);
+  const auto angle = exact::rationalAngleNear(0.7, 30);
+  const Slice walk(world, angle, PointLocation::Walk), trap(world, angle, PointLocation::Trapezoid),
+      land(world, angle, PointLocation::Landmarks);
+  Random rng(3);
+  for (int i = 0; i < 3000; ++i) {
+    const Vec2 p{rng.uniform(-20, 20), rng.uniform(-20, 20)};
+    const int w = walk.locate(p);
+    EXPECT_EQ(trap.locate(p), w);
+    EXPECT_EQ(land.locate(p), w);
+  }
+}
+
+class LineVsChecker : public ::testing::TestWithParam<uint64_t> {};
+
+TEST_P(LineVsChecker, ArcsMatchSampledAngles) {
+  const Scene s = randomScene(GetParam());
+  const CollisionChecker checker(s);
+  const LineWorld world(s, 0);
+  Random rng(GetParam() + 100);
+  size_t lines = 0, mismatches = 0, samples = 0, partial = 0;
+  for (int k = 0; k < 300; ++k) {
+    const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax), rng.uniform(s.bounds.ymin, s.bounds.ymax)};
+    const Line line(world, checker, 0, p);
+    const std::vector<double> critical = criticalAngles(world, p);
+    ++lines;
+    for (const Arc& a : line.arcs()) partial += !a.full();
+    for (int i = 0; i < 200; ++i) {
+      const double t = rng.uniform(-M_PI, M_PI);
+      bool nearCritical = false;
+      for (double c : critical) nearCritical |= std::fabs(std::remainder(t - c, 2 * M_PI)) < 1e-9;
+      if (nearCritical) continue;
+      ++samples;
+      const bool inArc = line.arcContaining(t) >= 0, free = checker.robotFree(0, {p.x, p.y, t});
+      // An arc never holds a colliding angle. Outside the arcs the checker may still call a
+      // placement free when its overlap is within the contact tolerance; the true shape must
+      // then overlap.
+      if (inArc && !free) ++mismatches;
+      if (!inArc && free && !trueShapeOverlaps(s, {p.x, p.y, t})) ++mismatches;
+    }
+    // Just inside each partial arc's ends is free; just outside, the true (unshrunk) shape
+    // overlaps something (unless another arc starts right there).
+    for (const Arc& a : line.arcs()) {
+      if (a.full() || a.hi - a.lo < 1e-3) continue;
+      EXPECT_TRUE(checker.robotFree(0, {p.x, p.y, a.lo + 1e-4}));
+      EXPECT_TRUE(checker.robotFree(0, {p.x, p.y, a.hi - 1e-4}));
+      for (double t : {a.lo - 1e-4, a.hi + 1e-4}) {
+        if (line.arcContaining(t) < 0) {
+          EXPECT_TRUE(trueShapeOverlaps(s, {p.x, p.y, t}));
+        }
+      }
+    }
+  }
+  EXPECT_EQ(mismatches, 0u) << "of " << samples << " sampled angles on " << lines << " lines";
+  EXPECT_GT(partial, 50u);  // the sample must include lines with real constraints
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, LineVsChecker, ::testing::Values(1, 2, 3));
+
+namespace {
+// A one-vertex-deep probe: a thin triangle robot whose tip at (1, 0) sweeps the unit circle
+// around p = (0, 0), and a wall whose lower side lies at height h.
+struct Probe {
+  Scene s;
+  explicit Probe(double h) {
+    s.bounds = {-5, -5, 5, 5};
+    s.obstacles = {{{-4, h}, {4, h}, {4, h + 1}, {-4, h + 1}}};
+    Robot r;
+    r.name = "probe";
+    r.shape = {{-0.2, -0.05}, {1, 0}, {-0.2, 0.05}};
+    s.robots = {r};
+  }
+};
+}  // namespace
+
+TEST(Line, ExactTangencyNeitherLosesNorSplitsTheArc) {
+  Probe probe(1.0);  // the tip's circle touches the wall at theta = pi/2 exactly
+  const CollisionChecker checker(probe.s);
+  const LineWorld world(probe.s, 0);
+  LineStats stats;
+  const Line line(world, checker, 0, {0, 0}, &stats);
+  ASSERT_EQ(line.arcs().size(), 1u);
+  EXPECT_TRUE(line.arcs()[0].full());
+  EXPECT_GE(stats.exactFallbacks, 1u);  // the discriminant was decided exactly
+}
+
+TEST(Line, ShallowAndDeepDips) {
+  // Dipping 1e-9 (below the tolerance): still one full arc. Dipping 0.01: the arc opens.
+  {
+    Probe probe(1.0 - 1e-9);
+    const CollisionChecker checker(probe.s);
+    const Line line(LineWorld(probe.s, 0), checker, 0, {0, 0});
+    ASSERT_EQ(line.arcs().size(), 1u);
+    EXPECT_TRUE(line.arcs()[0].full());
+  }
+  {
+    Probe probe(0.99);
+    const CollisionChecker checker(probe.s);
+    const Line line(LineWorld(probe.s, 0), checker, 0, {0, 0});
+    ASSERT_EQ(line.arcs().size(), 1u);
+    EXPECT_FALSE(line.arcs()[0].full());
+    EXPECT_FALSE(line.arcs()[0].contains(M_PI / 2));
+    EXPECT_TRUE(line.arcs()[0].contains(-M_PI / 2));
+    EXPECT_TRUE(line.arcs()[0].contains(M_PI));  // wraps through +-pi
+    EXPECT_NEAR(line.arcs()[0].hi - line.arcs()[0].lo, 2 * M_PI - 2 * std::acos(0.99), 1e-3);
+  }
+}

@@ -1,0 +1,125 @@
+// MMS for one robot: bundled scenes solved with certified paths, the sealed scene refused in
+// time, the same seed giving the same path.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "Support.h"
+#include "planner/MmsPlanner.h"
+#include "scene/SceneIO.h"
+
+using namespace mms;
+using namespace mms::test;
+
+namespace {
+
+MmsResult plan(const Scene& s, uint64_t seed, double seconds) {
+  MmsSettings st;
+  st.seed = seed;
+  MmsPlanner planner(s, 0, st);
+  return planner.solve(s.robots[0].start, s.robots[0].goal, Termination(seconds));
+}
+
+}  // namespace
+
+class SolvableScene : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SolvableScene, SolvedWithCertifiedPathsForSeveralSeeds) {
+  const Scene s = loadScene(scenario(GetParam()));
+  const CollisionChecker checker(s);
+  for (uint64_t seed = 1; seed <= 4; ++seed) {
+    const MmsResult r = plan(s, seed, 30);
+    ASSERT_EQ(r.status, MmsResult::Status::Found) << GetParam() << " seed " << seed;
+    Path p;
+    p.waypoints = r.waypoints;
+    // An independent check of what the planner returned.
+    const PathCheckResult c = checkPath(s, checker, p);
+    EXPECT_TRUE(c.ok) << c.reason;
+    EXPECT_GT(r.stats.slices, 0u);
+    EXPECT_GT(r.stats.graphEdges, 0u);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, SolvableScene,
+                         ::testing::Values("one-robot/bar-slot.json", "one-robot/corridor-corner.json",
+                                           "one-robot/bug-trap.json", "one-robot/maze.json"),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           n = n.substr(n.find('/') + 1);
+                           n = n.substr(0, n.find('.'));
+                           for (char& ch : n)
+                             if (ch == '-') ch = '_';
+                           return n;
+                         });
+
+TEST(Plan, SameSeedSamePathFileDifferentSeedOtherwise) {
+  TempDir dir;
+  const std::string scene = quote(scenario("one-robot/bug-trap.json"));
+  for (const char* name : {"a.json", "b.json"})
+    ASSERT_EQ(runMms("plan " + scene + " --seed 5 -q -o " + quote(dir.path(name))).code, 0);
+  ASSERT_EQ(runMms("plan " + scene + " --seed 6 -q -o " + quote(dir.path("c.json"))).code, 0);
+  EXPECT_EQ(readFile(dir.path("a.json")), readFile(dir.path("b.json")));
+  EXPECT_NE(readFile(dir.path("a.json")), readFile(dir.path("c.json")));
+  // And the checker certifies the file the planner wrote.
+  const Outcome c = runMms("check " + scene + " " + quote(dir.path("a.json")));
+  EXPECT_EQ(c.code, 0) << c.out;
+}
+
+TEST(Plan, SealedGoalEndsWithExitOneWithinTheTimeLimit) {
+  TempDir dir;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Outcome r = runMms("plan " + quote(scenario("one-robot/sealed-ring.json")) + " --time-limit 2 -o " +
+                           quote(dir.path("p.json")));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("no path found within 2 s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("slices"), std::string::npos);  // says what was built
+  EXPECT_FALSE(std::filesystem::exists(dir.path("p.json")));
+  EXPECT_LT(seconds, 2.0 + 3.0);  // the limit plus process start and a slow shared machine
+}
+
+TEST(Plan, TranslateOnlyRobotUsesItsExactFreeSpace) {
+  Scene s;
+  s.name = "translate";
+  s.bounds = {0, 0, 10, 10};
+  s.obstacles = {{{4, 0}, {6, 0}, {6, 8}, {4, 8}}};
+  Robot r;
+  r.name = "block";
+  r.shape = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+  r.start = {2, 2, 0.3};
+  r.goal = {8, 2, 0.3};
+  r.motion = Motion::Translate;
+  s.robots = {r};
+  const MmsResult found = plan(s, 1, 10);
+  ASSERT_EQ(found.status, MmsResult::Status::Found);
+  for (const Config& q : found.waypoints) EXPECT_EQ(q[2], 0.3);
+  EXPECT_EQ(found.stats.slices, 1u);  // one exact slice, no sampling
+  // Close the gap above the wall: the two sides are different cells and the answer is
+  // immediate, not a time-out.
+  s.obstacles = {{{4, 0}, {6, 0}, {6, 10}, {4, 10}}};
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_EQ(plan(s, 1, 30).status, MmsResult::Status::NotFound);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
+}
+
+TEST(Plan, RoadmapAnswersASecondQueryWithoutRebuilding) {
+  const Scene s = loadScene(scenario("one-robot/bug-trap.json"));
+  MmsPlanner planner(s, 0, MmsSettings{});
+  const Robot& r = s.robots[0];
+  const MmsResult first = planner.solve(r.start, r.goal, Termination(30));
+  ASSERT_EQ(first.status, MmsResult::Status::Found);
+  const size_t slices = planner.slices().size();
+  // The reverse query, and one to another free placement outside the trap.
+  const MmsResult back = planner.solve(r.goal, r.start, Termination(30));
+  ASSERT_EQ(back.status, MmsResult::Status::Found);
+  const MmsResult other = planner.solve(r.start, {7, 6, 0}, Termination(30));
+  ASSERT_EQ(other.status, MmsResult::Status::Found);
+  EXPECT_EQ(planner.slices().size(), slices);  // answered from the existing slices
+}
+
+TEST(Plan, RejectsScenesItCannotPlanYet) {
+  const Outcome r = runMms("plan " + quote(scenario("two-robots/niche-swap.json")));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("robots: 2 robots"), std::string::npos) << r.err;
+}
