@@ -101,13 +101,14 @@ TEST(Slice, PointLocationStrategiesAgree) {
   const SliceWorld world(s, 0);
   const auto angle = exact::rationalAngleNear(0.7, 30);
   const Slice walk(world, angle, PointLocation::Walk), trap(world, angle, PointLocation::Trapezoid),
-      land(world, angle, PointLocation::Landmarks);
+      land(world, angle, PointLocation::Landmarks), autoPl(world, angle, PointLocation::Auto);
   Random rng(3);
   for (int i = 0; i < 3000; ++i) {
     const Vec2 p{rng.uniform(-20, 20), rng.uniform(-20, 20)};
     const int w = walk.locate(p);
     EXPECT_EQ(trap.locate(p), w);
     EXPECT_EQ(land.locate(p), w);
+    EXPECT_EQ(autoPl.locate(p), w) << "query " << i;  // switches strategy after 600 queries
   }
 }
 

@@ -123,3 +123,30 @@ TEST(Plan, RejectsScenesItCannotPlanYet) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("robots: 2 robots"), std::string::npos) << r.err;
 }
+
+TEST(Plan, QueriesFileAnswersEachQueryOnOneRoadmap) {
+  TempDir dir;
+  const std::string q = dir.file("q.json", R"({"format": "mms-queries/1", "queries": [
+      {"start": [-2, 0, 1.5707963267948966], "goal": [7, 0, 1.5707963267948966]},
+      {"start": [7, 0, 1.5707963267948966], "goal": [-7, -7, 0]}]})");
+  const Outcome r = runMms("plan " + quote(scenario("one-robot/bug-trap.json")) + " -q --queries " + quote(q) +
+                           " -o " + quote(dir.path("p.json")) + " --svg " + quote(dir.path("p.svg")) +
+                           " --svg-roadmap");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  for (const char* f : {"p.0.json", "p.1.json", "p.0.svg", "p.1.svg"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path(f))) << f;
+  EXPECT_NE(readFile(dir.path("p.0.svg")).find("id=\"cells\""), std::string::npos);
+  // Each answer is certified against its own query (the checker needs a scene with those ends).
+  const nlohmann::json p1 = nlohmann::json::parse(readFile(dir.path("p.1.json")));
+  EXPECT_EQ(p1["waypoints"].back()[0], -7);
+  EXPECT_EQ(p1["waypoints"].front()[0], 7);
+}
+
+TEST(Plan, BadQueriesFileExitsTwoNamingTheField) {
+  TempDir dir;
+  const std::string q = dir.file("q.json", R"({"format": "mms-queries/1", "queries": [
+      {"start": [-2, 0, 1.5707963267948966], "goal": [3.2, 0, 1.5707963267948966]}]})");
+  const Outcome r = runMms("plan " + quote(scenario("one-robot/bug-trap.json")) + " --queries " + quote(q));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("q.json: queries[0].goal: robot 'bar' collides with obstacles["), std::string::npos) << r.err;
+}

@@ -35,6 +35,8 @@ struct PlanArgs {
   double timeLimit = 60;
   size_t nTheta = 16, nLines = 64;
   bool quiet = false;
+  bool svgRoadmap = false;  // draw line points and the path's slice cells
+  std::string queries;      // mms-queries/1 file: several queries on one roadmap
 };
 int plan(const PlanArgs& a);
 

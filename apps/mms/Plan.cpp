@@ -1,9 +1,11 @@
 #include <cstdio>
+#include <filesystem>
 
 #include "Commands.h"
 #include "planner/MmsPlanner.h"
 #include "render/SvgRenderer.h"
 #include "scene/Errors.h"
+#include "scene/Json.h"
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
 
@@ -11,16 +13,56 @@ namespace mms::cli {
 
 namespace {
 
-void printStats(std::FILE* out, const MmsStats& s) {
-  std::fprintf(out,
-               "  manifolds: %zu slices (%zu cells), %zu lines (%zu arcs); graph %zu nodes, %zu edges; "
-               "%zu rounds\n",
-               s.slices, s.sliceCells, s.lines, s.lineArcs, s.graphNodes, s.graphEdges, s.rounds);
-  std::fprintf(out,
-               "  time: %.3f s total = slices %.3f + lines %.3f + connect %.3f + search %.3f + "
-               "motion %.3f + shortcut/certify %.3f\n",
-               s.totalSeconds, s.sliceSeconds, s.lineSeconds, s.connectSeconds, s.searchSeconds,
-               s.motionSeconds, s.certifySeconds);
+void printStats(const MmsStats& s) {
+  std::printf("  manifolds: %zu slices (%zu cells), %zu lines (%zu arcs); graph %zu nodes, %zu edges; %zu rounds\n",
+              s.slices, s.sliceCells, s.lines, s.lineArcs, s.graphNodes, s.graphEdges, s.rounds);
+  std::printf("  time: %.3f s total = slices %.3f + lines %.3f + connect %.3f + search %.3f + motion %.3f + "
+              "shortcut/certify %.3f\n",
+              s.totalSeconds, s.sliceSeconds, s.lineSeconds, s.connectSeconds, s.searchSeconds,
+              s.motionSeconds, s.certifySeconds);
+  if (s.rejectedPaths) std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
+}
+
+struct Query {
+  Pose start, goal;
+};
+
+// mms-queries/1: {"format": "mms-queries/1", "queries": [{"start": [x,y,t], "goal": [x,y,t]}]}
+std::vector<Query> loadQueries(const std::string& file, const Scene& scene) {
+  using json_in::Node;
+  const auto doc = json_in::parseFile(file);
+  const Node root(doc, file, "");
+  root.allowOnly({"format", "queries"});
+  if (root["format"].string() != "mms-queries/1")
+    root["format"].fail("unsupported format '" + root["format"].string() + "' (expected mms-queries/1)");
+  const Node qs = root["queries"];
+  const size_t n = qs.arraySize(1, 100000);
+  const CollisionChecker checker(scene);
+  std::vector<Query> out;
+  for (size_t i = 0; i < n; ++i) {
+    qs[i].allowOnly({"start", "goal"});
+    Query q;
+    Pose* ends[2] = {&q.start, &q.goal};
+    const char* names[2] = {"start", "goal"};
+    for (int e = 0; e < 2; ++e) {
+      const Node p = qs[i][names[e]];
+      p.arraySize(3, 3);
+      *ends[e] = {p[size_t(0)].number(json_in::kMaxCoordinate), p[size_t(1)].number(json_in::kMaxCoordinate),
+                  p[size_t(2)].number(json_in::kMaxAngle)};
+      const Contact c = checker.robotContact(0, *ends[e]);
+      if (c.kind != Contact::Kind::None) p.fail("robot '" + scene.robots[0].name + "' collides with " + c.describe(scene));
+      if (scene.robots[0].motion == Motion::Translate && ends[e]->theta != scene.robots[0].start.theta)
+        p.fail("a translate robot keeps its angle " + std::to_string(scene.robots[0].start.theta));
+    }
+    out.push_back(q);
+  }
+  return out;
+}
+
+// "out.json" -> "out.3.json" for query 3.
+std::string numbered(const std::string& path, size_t i) {
+  const std::filesystem::path p(path);
+  return (p.parent_path() / (p.stem().string() + "." + std::to_string(i) + p.extension().string())).string();
 }
 
 }  // namespace
@@ -30,48 +72,66 @@ int plan(const PlanArgs& a) {
   if (scene.robots.size() != 1)
     throw InputError(a.scene + ": robots: " + std::to_string(scene.robots.size()) +
                      " robots; this version of mms plan handles scenes with one robot");
+  std::vector<Query> queries{{scene.robots[0].start, scene.robots[0].goal}};
+  if (!a.queries.empty()) queries = loadQueries(a.queries, scene);
+
   MmsSettings settings;
   settings.seed = a.seed;
   settings.nTheta = a.nTheta;
   settings.nLines = a.nLines;
   MmsPlanner planner(scene, 0, settings);
-  const Termination stop(a.timeLimit);
-  Stopwatch clock;
-  auto progress = [&](const MmsStats& s) {
-    if (a.quiet || clock.seconds() < 1.0) return;
-    std::fprintf(stderr, "mms plan: %.1f s, round %zu: %zu slices, %zu lines, graph %zu nodes / %zu edges\n",
-                 clock.seconds(), s.rounds, planner.slices().size(), planner.lines().size(), s.graphNodes, s.graphEdges);
-  };
-  const Robot& r = scene.robots[0];
-  const MmsResult res = planner.solve(r.start, r.goal, stop, progress);
-  if (res.status != MmsResult::Status::Found) {
-    std::printf("%s: no path found within %.3g s (%s)\n", a.scene.c_str(), a.timeLimit,
-                res.status == MmsResult::Status::Cancelled ? "interrupted" : "time limit");
-    printStats(stdout, res.stats);
-    if (res.stats.rejectedPaths)
-      std::printf("  %zu candidate motions failed certification\n", res.stats.rejectedPaths);
-    return 1;
+  int exitCode = 0;
+  for (size_t qi = 0; qi < queries.size(); ++qi) {
+    const Query& q = queries[qi];
+    Scene queryScene = scene;
+    queryScene.robots[0].start = q.start;
+    queryScene.robots[0].goal = q.goal;
+    const std::string label = a.queries.empty() ? a.scene : a.queries + " query " + std::to_string(qi);
+    Stopwatch clock;
+    auto progress = [&](const MmsStats& s) {
+      if (a.quiet || clock.seconds() < 1.0) return;
+      std::fprintf(stderr, "mms plan: %.1f s, round %zu: %zu slices, %zu lines, graph %zu nodes / %zu edges\n",
+                   clock.seconds(), s.rounds, s.slices, s.lines, s.graphNodes, s.graphEdges);
+    };
+    const MmsResult res = planner.solve(q.start, q.goal, Termination(a.timeLimit), progress);
+    if (res.status != MmsResult::Status::Found) {
+      std::printf("%s: no path found within %.3g s (%s)\n", label.c_str(), a.timeLimit,
+                  res.status == MmsResult::Status::Cancelled ? "interrupted" : "time limit");
+      printStats(res.stats);
+      exitCode = 1;
+      continue;
+    }
+    Path path;
+    path.waypoints = res.waypoints;
+    const MmsStats& st = res.stats;
+    path.extra = {{"planner", "mms"},
+                  {"seed", a.seed},
+                  {"statistics",
+                   {{"slices", st.slices},
+                    {"lines", st.lines},
+                    {"slice_cells", st.sliceCells},
+                    {"line_arcs", st.lineArcs},
+                    {"graph_nodes", st.graphNodes},
+                    {"graph_edges", st.graphEdges},
+                    {"path_cells", st.pathCells}}}};
+    const bool many = queries.size() > 1;
+    if (!a.output.empty()) savePath(path, queryScene, many ? numbered(a.output, qi) : a.output);
+    if (!a.svg.empty()) {
+      SvgOptions o;
+      if (a.svgRoadmap) {
+        for (const Line& l : planner.lines()) o.markers.push_back(l.point());
+        for (const ConnectivityGraph::Node& n : res.cells)
+          if (n.kind == ConnectivityGraph::Kind::SliceCell)
+            o.regions.push_back(planner.slices()[n.manifold].cell(n.cell));
+      }
+      writeFileAtomically(many ? numbered(a.svg, qi) : a.svg, renderSvg(queryScene, &path, o));
+    }
+    std::printf("%s: path found and certified: %zu waypoints, translation %.4g, rotation %.4g rad, min clearance %.3g\n",
+                label.c_str(), path.waypoints.size(), res.certificate.translation, res.certificate.rotation,
+                res.certificate.minClearance);
+    printStats(st);
   }
-  Path path;
-  path.waypoints = res.waypoints;
-  path.extra = {{"planner", "mms"},
-                {"seed", a.seed},
-                {"statistics",
-                 {{"slices", res.stats.slices},
-                  {"lines", res.stats.lines},
-                  {"slice_cells", res.stats.sliceCells},
-                  {"line_arcs", res.stats.lineArcs},
-                  {"graph_nodes", res.stats.graphNodes},
-                  {"graph_edges", res.stats.graphEdges},
-                  {"path_cells", res.stats.pathCells}}}};
-  if (!a.output.empty()) savePath(path, scene, a.output);
-  if (!a.svg.empty()) writeFileAtomically(a.svg, renderSvg(scene, &path));
-  std::printf("%s: path found and certified: %zu waypoints, translation %.4g, rotation %.4g rad, "
-              "min clearance %.3g\n",
-              a.scene.c_str(), path.waypoints.size(), res.certificate.translation, res.certificate.rotation,
-              res.certificate.minClearance);
-  printStats(stdout, res.stats);
-  return 0;
+  return exitCode;
 }
 
 }  // namespace mms::cli

@@ -76,6 +76,12 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(1, 10000000));
   planCmd->add_flag("-q,--quiet", pa.quiet, "No progress messages on stderr");
+  planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
+                    "In the SVG, also draw the lines' points and the free-space cells of the slices the path uses");
+  planCmd->add_option("--queries", pa.queries,
+                      "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "
+                      "\"queries\": [{\"start\": [x,y,theta], \"goal\": [x,y,theta]}, ...]}; with -o/--svg, "
+                      "files are numbered (out.0.json, ...)");
 
   try {
     app.parse(argc, argv);

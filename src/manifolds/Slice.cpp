@@ -6,6 +6,8 @@
 #include <CGAL/Polygon_set_2.h>
 #include <CGAL/minkowski_sum_2.h>
 
+#include <atomic>
+#include <mutex>
 #include <unordered_map>
 #include <variant>
 
@@ -68,6 +70,13 @@ double ringsArea(const std::vector<Ring>& rings) {
 struct Slice::Impl {
   PolygonSet free;
   std::variant<std::monostate, Walk, Trapezoid, Landmarks> locator;
+  // Auto: the walk answers until kUpgradeAfter queries, then a trapezoidal map takes over.
+  static constexpr size_t kUpgradeAfter = 600;
+  bool autoUpgrade = false;
+  std::atomic<size_t> queries{0};
+  std::once_flag upgradeOnce;
+  std::unique_ptr<Trapezoid> upgraded;
+  std::atomic<bool> upgradedReady{false};
   std::unordered_map<const void*, int> faceIndex;
   std::vector<std::vector<Ring>> cells;
   std::vector<double> areas;
@@ -130,6 +139,10 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
     impl_->cells.push_back(std::move(rings));
   }
   switch (strategy) {
+    case PointLocation::Auto:
+      impl_->autoUpgrade = true;
+      impl_->locator.emplace<Walk>(arr);
+      break;
     case PointLocation::Walk: impl_->locator.emplace<Walk>(arr); break;
     case PointLocation::Trapezoid: impl_->locator.emplace<Trapezoid>(arr); break;
     case PointLocation::Landmarks: impl_->locator.emplace<Landmarks>(arr); break;
@@ -148,15 +161,27 @@ int Slice::locate(Vec2 p) const {
   if (impl_->cells.empty()) return -1;
   const Point q = exact::toExact(p);
   int result = -1;
+  auto answer = [&](const auto& obj) {
+    if (const auto* f = boost::get<Arrangement::Face_const_handle>(&obj)) {
+      auto it = impl_->faceIndex.find(&**f);
+      if (it != impl_->faceIndex.end()) result = it->second;
+    }
+  };
+  if (impl_->autoUpgrade) {
+    if (impl_->queries.fetch_add(1, std::memory_order_relaxed) + 1 >= Impl::kUpgradeAfter) {
+      std::call_once(impl_->upgradeOnce, [&] {
+        impl_->upgraded = std::make_unique<Trapezoid>(impl_->free.arrangement());
+        impl_->upgradedReady.store(true, std::memory_order_release);
+      });
+    }
+    if (impl_->upgradedReady.load(std::memory_order_acquire)) {
+      answer(impl_->upgraded->locate(q));
+      return result;
+    }
+  }
   std::visit(
       [&](const auto& pl) {
-        if constexpr (!std::is_same_v<std::decay_t<decltype(pl)>, std::monostate>) {
-          const auto obj = pl.locate(q);
-          if (const auto* f = boost::get<Arrangement::Face_const_handle>(&obj)) {
-            auto it = impl_->faceIndex.find(&**f);
-            if (it != impl_->faceIndex.end()) result = it->second;
-          }
-        }
+        if constexpr (!std::is_same_v<std::decay_t<decltype(pl)>, std::monostate>) answer(pl.locate(q));
       },
       impl_->locator);
   return result;

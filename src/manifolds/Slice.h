@@ -17,8 +17,9 @@
 namespace mms {
 
 /// Point-location strategies of CGAL's arrangement package (bench/bench_manifolds.cpp
-/// measures them).
-enum class PointLocation { Walk, Trapezoid, Landmarks };
+/// measures them). Auto walks (no preprocessing) until a slice has answered enough queries
+/// to pay for a trapezoidal map (~5 ms to build, ~10x faster per query on large slices).
+enum class PointLocation { Auto, Walk, Trapezoid, Landmarks };
 
 /// What every slice of one robot shares: the obstacles and the robot in exact form.
 class SliceWorld {
@@ -38,7 +39,7 @@ class SliceWorld {
 class Slice {
  public:
   Slice(const SliceWorld& world, const exact::RationalAngle& angle,
-        PointLocation strategy = PointLocation::Walk);
+        PointLocation strategy = PointLocation::Auto);
   ~Slice();
   Slice(Slice&&) noexcept;
   Slice& operator=(Slice&&) noexcept;
@@ -47,6 +48,7 @@ class Slice {
   double theta() const { return theta_; }
   size_t fscCount() const;
   /// The FSC whose interior contains p, or -1 (p forbidden or on a cell's boundary).
+  /// Safe to call from several threads.
   int locate(Vec2 p) const;
   /// FSC i as rings in doubles: its outer boundary (counter-clockwise) then its holes.
   const std::vector<Ring>& cell(size_t i) const;

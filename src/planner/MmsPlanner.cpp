@@ -191,10 +191,20 @@ MmsResult MmsPlanner::solve(const Pose& start, const Pose& goal, const Terminati
 
   size_t targetSlices = std::max(slices_.size(), settings_.nTheta);
   size_t targetLines = std::max(lines_.size(), settings_.nLines);
+  Stopwatch sinceReport;
+  auto report = [&](bool force) {
+    if (!progress || (!force && sinceReport.seconds() < 1.0)) return;
+    stats_.slices = slices_.size();
+    stats_.lines = lines_.size();
+    stats_.graphNodes = graph_.nodeCount();
+    stats_.graphEdges = graph_.edgeCount();
+    progress(stats_);
+    sinceReport = Stopwatch();
+  };
   while (true) {
     ++stats_.rounds;
-    while (slices_.size() < targetSlices && !stop()) addSlice(nextAngle());
-    while (lines_.size() < targetLines && !stop()) addLine(nextLinePoint());
+    while (slices_.size() < targetSlices && !stop()) addSlice(nextAngle()), report(false);
+    while (lines_.size() < targetLines && !stop()) addLine(nextLinePoint()), report(false);
     Stopwatch search;
     const auto nodes = graph_.path(from, to);
     stats_.searchSeconds += search.seconds();
@@ -212,12 +222,13 @@ MmsResult MmsPlanner::solve(const Pose& start, const Pose& goal, const Terminati
       stats_.certifySeconds += certify.seconds();
       if (!w.empty() && result.certificate.ok) {
         stats_.pathCells = nodes->size();
+        for (size_t v : *nodes) result.cells.push_back(graph_.node(v));
         result.waypoints = std::move(w);
         return finish(MmsResult::Status::Found);
       }
       ++stats_.rejectedPaths;
     }
-    if (progress) progress(stats_);
+    report(true);
     if (stop()) return finish(stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
     targetSlices *= 2;
     targetLines *= 2;

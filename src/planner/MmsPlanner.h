@@ -29,7 +29,7 @@ struct MmsSettings {
   size_t nLines = 64;     // n_l: lines in the first round
   double freeLineShare = 0.5;  // share of line points drawn inside slice FSCs, the rest uniform
   size_t shortcutAttempts = 200;
-  PointLocation pointLocation = PointLocation::Walk;
+  PointLocation pointLocation = PointLocation::Auto;
 };
 
 struct MmsStats {
@@ -45,6 +45,7 @@ struct MmsStats {
 struct MmsResult {
   enum class Status { Found, NotFound, Cancelled } status = Status::NotFound;
   std::vector<Config> waypoints;  // the robot's (x, y, theta), certified when Found
+  std::vector<ConnectivityGraph::Node> cells;  // the graph path: line arcs and slice cells
   PathCheckResult certificate;
   MmsStats stats;
 };

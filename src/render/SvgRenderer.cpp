@@ -100,6 +100,23 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
   for (const Ring& ob : scene.obstacles) svg << "<polygon points=\"" << points(ob) << "\"/>\n";
   svg << "</g>\n";
 
+  if (!o.regions.empty()) {
+    svg << "<g id=\"cells\" fill=\"#7fbf7f\" fill-opacity=\"0.12\" fill-rule=\"evenodd\" stroke=\"#2e7d32\" "
+        << "stroke-opacity=\"0.6\" stroke-width=\"" << fmt(0.5 * stroke) << "\">\n";
+    for (const std::vector<Ring>& region : o.regions) {
+      svg << "<path d=\"";
+      for (const Ring& r : region) svg << "M" << points(r) << "Z ";
+      svg << "\"/>\n";
+    }
+    svg << "</g>\n";
+  }
+  if (!o.markers.empty()) {
+    svg << "<g id=\"markers\" fill=\"#555\" fill-opacity=\"0.6\">\n";
+    for (Vec2 m : o.markers)
+      svg << "<circle cx=\"" << fmt(m.x) << "\" cy=\"" << fmt(m.y) << "\" r=\"" << fmt(1.5 * stroke) << "\"/>\n";
+    svg << "</g>\n";
+  }
+
   const size_t k = scene.robots.size();
   if (path && !path->waypoints.empty()) {
     const std::vector<double> acc = cumulativeEffort(scene, *path);

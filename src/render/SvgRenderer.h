@@ -14,6 +14,10 @@ struct SvgOptions {
   int ghosts = 24;       // faint poses drawn along a path
   bool animate = true;
   double secondsPerExtent = 4;  // animation speed: time to sweep the bounds' larger side
+  /// Planner internals to show: regions (e.g. free-space cells of slices: an outer ring and
+  /// its holes each) and markers (e.g. the points of lines), drawn faintly under the robots.
+  std::vector<std::vector<Ring>> regions;
+  std::vector<Vec2> markers;
 };
 
 std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& options = {});

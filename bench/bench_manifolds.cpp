@@ -1,0 +1,96 @@
+// Cost of MMS's building blocks on the reference scene (10-vertex non-convex robot, 20
+// obstacles of 8 vertices): one slice, one line, one point location per strategy, and one whole
+// query on bundled scenes.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "manifolds/Line.h"
+#include "manifolds/Slice.h"
+#include "planner/MmsPlanner.h"
+#include "scene/Generators.h"
+#include "scene/SceneIO.h"
+
+using namespace mms;
+
+namespace {
+
+const Scene& referenceScene() {
+  static const Scene s = [] {
+    RandomPolygonsSettings st;
+    st.seed = 7;
+    return parseScene(sceneToJson(randomPolygonsScene(st)), "generated");
+  }();
+  return s;
+}
+
+void BM_Slice(benchmark::State& state) {
+  const SliceWorld world(referenceScene(), 0);
+  Random rng(1);
+  size_t cells = 0;
+  for (auto _ : state) {
+    const Slice s(world, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
+    cells += s.fscCount();
+  }
+  state.counters["cells"] = double(cells) / double(state.iterations());
+}
+BENCHMARK(BM_Slice)->Unit(benchmark::kMillisecond);
+
+void BM_Line(benchmark::State& state) {
+  const Scene& s = referenceScene();
+  const LineWorld world(s, 0);
+  const CollisionChecker checker(s);
+  Random rng(2);
+  LineStats stats;
+  for (auto _ : state) {
+    const Line line(world, checker, 0, {rng.uniform(-50, 50), rng.uniform(-50, 50)}, &stats);
+    benchmark::DoNotOptimize(line.arcs().size());
+  }
+  state.counters["candidates"] = double(stats.candidates) / double(state.iterations());
+  state.counters["exact_fallbacks"] = double(stats.exactFallbacks);
+}
+BENCHMARK(BM_Line)->Unit(benchmark::kMicrosecond);
+
+template <PointLocation kStrategy>
+void BM_Locate(benchmark::State& state) {
+  const SliceWorld world(referenceScene(), 0);
+  const Slice slice(world, exact::rationalAngleNear(0.3, 30), kStrategy);
+  Random rng(3);
+  std::vector<Vec2> points;
+  for (int i = 0; i < 1024; ++i) points.push_back({rng.uniform(-50, 50), rng.uniform(-50, 50)});
+  size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(slice.locate(points[i++ & 1023]));
+}
+BENCHMARK(BM_Locate<PointLocation::Walk>)->Name("BM_Locate/walk");
+BENCHMARK(BM_Locate<PointLocation::Auto>)->Name("BM_Locate/auto");
+BENCHMARK(BM_Locate<PointLocation::Trapezoid>)->Name("BM_Locate/trapezoid");
+BENCHMARK(BM_Locate<PointLocation::Landmarks>)->Name("BM_Locate/landmarks");
+
+template <PointLocation kStrategy>
+void BM_SliceWithLocator(benchmark::State& state) {
+  const SliceWorld world(referenceScene(), 0);
+  for (auto _ : state) benchmark::DoNotOptimize(Slice(world, exact::rationalAngleNear(0.3, 30), kStrategy).fscCount());
+}
+BENCHMARK(BM_SliceWithLocator<PointLocation::Walk>)->Name("BM_SliceBuild/walk")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SliceWithLocator<PointLocation::Trapezoid>)->Name("BM_SliceBuild/trapezoid")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SliceWithLocator<PointLocation::Landmarks>)->Name("BM_SliceBuild/landmarks")->Unit(benchmark::kMillisecond);
+
+// A whole query (fresh planner each time) on a bundled scene; seeds cycle so the figure is
+// a mean over seeds.
+void BM_Query(benchmark::State& state, const char* file) {
+  const Scene s = loadScene(std::string(MMS_SOURCE_DIR) + "/scenarios/" + file);
+  uint64_t seed = 0;
+  for (auto _ : state) {
+    MmsSettings st;
+    st.seed = ++seed;
+    MmsPlanner planner(s, 0, st);
+    const MmsResult r = planner.solve(s.robots[0].start, s.robots[0].goal, Termination(60));
+    if (r.status != MmsResult::Status::Found) state.SkipWithError("no path");
+  }
+}
+BENCHMARK_CAPTURE(BM_Query, bar_slot, "one-robot/bar-slot.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Query, bug_trap, "one-robot/bug-trap.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Query, maze, "one-robot/maze.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Query, corridor_corner, "one-robot/corridor-corner.json")->Unit(benchmark::kMillisecond);
+
+}  // namespace
