@@ -33,7 +33,7 @@ struct PlanArgs {
   std::string scene, output, svg;
   uint64_t seed = 1;
   double timeLimit = 60;
-  size_t nTheta = 16, nLines = 64;
+  size_t nTheta = 16, nLines = 1024;
   bool quiet = false;
   bool svgRoadmap = false;  // draw line points and the path's slice cells
   std::string queries;      // mms-queries/1 file: several queries on one roadmap
