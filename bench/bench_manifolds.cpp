@@ -14,6 +14,12 @@
 using namespace mms;
 
 namespace {
+PoseTest freeTest(const CollisionChecker& c) {
+  return [&c](const Pose& q) { return c.robotFree(0, q); };
+}
+}  // namespace
+
+namespace {
 
 const Scene& referenceScene() {
   static const Scene s = [] {
@@ -43,7 +49,7 @@ void BM_Line(benchmark::State& state) {
   Random rng(2);
   LineStats stats;
   for (auto _ : state) {
-    const Line line(world, checker, 0, {rng.uniform(-50, 50), rng.uniform(-50, 50)}, &stats);
+    const Line line(world, freeTest(checker), {rng.uniform(-50, 50), rng.uniform(-50, 50)}, &stats);
     benchmark::DoNotOptimize(line.arcs().size());
   }
   state.counters["candidates"] = double(stats.candidates) / double(state.iterations());

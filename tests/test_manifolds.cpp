@@ -13,6 +13,12 @@
 #include "scene/SceneIO.h"
 
 using namespace mms;
+
+namespace {
+PoseTest freeTest(const CollisionChecker& c) {
+  return [&c](const Pose& q) { return c.robotFree(0, q); };
+}
+}  // namespace
 using namespace mms::test;
 
 namespace {
@@ -122,7 +128,7 @@ TEST_P(LineVsChecker, ArcsMatchSampledAngles) {
   size_t lines = 0, mismatches = 0, samples = 0, partial = 0;
   for (int k = 0; k < 300; ++k) {
     const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax), rng.uniform(s.bounds.ymin, s.bounds.ymax)};
-    const Line line(world, checker, 0, p);
+    const Line line(world, freeTest(checker), p);
     const std::vector<double> critical = criticalAngles(world, p);
     ++lines;
     for (const Arc& a : line.arcs()) partial += !a.full();
@@ -179,7 +185,7 @@ TEST(Line, ExactTangencyNeitherLosesNorSplitsTheArc) {
   const CollisionChecker checker(probe.s);
   const LineWorld world(probe.s, 0);
   LineStats stats;
-  const Line line(world, checker, 0, {0, 0}, &stats);
+  const Line line(world, freeTest(checker), {0, 0}, &stats);
   ASSERT_EQ(line.arcs().size(), 1u);
   EXPECT_TRUE(line.arcs()[0].full());
   EXPECT_GE(stats.exactFallbacks, 1u);  // the discriminant was decided exactly
@@ -190,14 +196,14 @@ TEST(Line, ShallowAndDeepDips) {
   {
     Probe probe(1.0 - 1e-9);
     const CollisionChecker checker(probe.s);
-    const Line line(LineWorld(probe.s, 0), checker, 0, {0, 0});
+    const Line line(LineWorld(probe.s, 0), freeTest(checker), {0, 0});
     ASSERT_EQ(line.arcs().size(), 1u);
     EXPECT_TRUE(line.arcs()[0].full());
   }
   {
     Probe probe(0.99);
     const CollisionChecker checker(probe.s);
-    const Line line(LineWorld(probe.s, 0), checker, 0, {0, 0});
+    const Line line(LineWorld(probe.s, 0), freeTest(checker), {0, 0});
     ASSERT_EQ(line.arcs().size(), 1u);
     EXPECT_FALSE(line.arcs()[0].full());
     EXPECT_FALSE(line.arcs()[0].contains(M_PI / 2));

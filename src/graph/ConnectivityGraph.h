@@ -13,8 +13,9 @@ class ConnectivityGraph {
   enum class Kind : uint8_t { SliceCell, LineArc };
   struct Node {
     Kind kind;
-    uint32_t manifold;  // slice or line index
-    uint32_t cell;      // FSC index within it
+    uint32_t subspace;  // which subspace (robot moving, the others held) the manifold belongs to
+    uint32_t manifold;  // slice or line index within the subspace
+    uint32_t cell;      // FSC index within the manifold
   };
 
   size_t addNode(const Node& n);

@@ -152,11 +152,9 @@ std::vector<double> criticalAngles(const LineWorld& world, Vec2 p, LineStats* st
   return roots;
 }
 
-Line::Line(const LineWorld& world, const CollisionChecker& checker, size_t robot, Vec2 p,
-           LineStats* stats)
-    : p_(p) {
+Line::Line(const LineWorld& world, const PoseTest& isFree, Vec2 p, LineStats* stats) : p_(p) {
   const std::vector<double> roots = criticalAngles(world, p, stats);
-  auto freeAt = [&](double theta) { return checker.robotFree(robot, {p.x, p.y, theta}); };
+  auto freeAt = [&](double theta) { return isFree({p.x, p.y, theta}); };
   if (roots.empty()) {
     if (freeAt(0.0)) arcs_.push_back({-M_PI, M_PI});
     return;

@@ -10,6 +10,7 @@
 // decide (a tangency), its sign is decided exactly, so a grazing contact is neither lost nor
 // split. Spurious extra critical angles are harmless: the free status of every interval
 // between consecutive critical angles is decided by the collision checker at its middle.
+#include <functional>
 #include <vector>
 
 #include "geometry/CollisionChecker.h"
@@ -47,12 +48,13 @@ class LineWorld {
   Box bounds_;
 };
 
+/// Whether the moving robot is free at a pose (the collision checker, with whatever is held
+/// fixed): decides the status of the intervals between critical angles.
+using PoseTest = std::function<bool(const Pose&)>;
+
 class Line {
  public:
-  /// `checker` decides the status of the intervals between critical angles; `robot` is the
-  /// robot's index in the checker.
-  Line(const LineWorld& world, const CollisionChecker& checker, size_t robot, Vec2 p,
-       LineStats* stats = nullptr);
+  Line(const LineWorld& world, const PoseTest& isFree, Vec2 p, LineStats* stats = nullptr);
 
   Vec2 point() const { return p_; }
   const std::vector<Arc>& arcs() const { return arcs_; }

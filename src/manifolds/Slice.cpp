@@ -68,6 +68,8 @@ double ringsArea(const std::vector<Ring>& rings) {
 }  // namespace
 
 struct Slice::Impl {
+  Polygon neg;     // -R_theta
+  Box regionBox;   // reference points keeping the robot inside the bounds (doubles, for culling)
   PolygonSet free;
   std::variant<std::monostate, Walk, Trapezoid, Landmarks> locator;
   // Auto: the walk answers until kUpgradeAfter queries, then a trapezoidal map takes over.
@@ -82,8 +84,73 @@ struct Slice::Impl {
   std::vector<double> areas;
 };
 
+namespace {
+
+// Sums of `obstacles` with -R_theta that can reach the region (boxes in doubles, with a margin).
+std::vector<PolygonWithHoles> reachingSums(const std::vector<Polygon>& obstacles, const std::vector<Box>& boxes,
+                                           const Polygon& neg, const Box& regionBox) {
+  const Box negBox = boundingBox(exact::toDouble(neg));
+  std::vector<PolygonWithHoles> sums;
+  for (size_t i = 0; i < obstacles.size(); ++i) {
+    const Box& o = boxes[i];
+    const double m = 1e-9 * (1 + std::fabs(o.xmax) + std::fabs(o.ymax) + std::fabs(o.xmin) + std::fabs(o.ymin));
+    const Box sumBox{o.xmin + negBox.xmin - m, o.ymin + negBox.ymin - m, o.xmax + negBox.xmax + m,
+                     o.ymax + negBox.ymax + m};
+    if (sumBox.overlaps(regionBox)) sums.push_back(CGAL::minkowski_sum_2(obstacles[i], neg));
+  }
+  return sums;
+}
+
+}  // namespace
+
+// Cells are the arrangement's contained faces; the locator answers queries on them.
+void Slice::index(PointLocation strategy) {
+  Impl& im = *impl_;
+  const Arrangement& arr = im.free.arrangement();
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (!f->contained() || f->is_unbounded()) continue;
+    std::vector<Ring> rings{ccbRing(f->outer_ccb())};
+    for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) rings.push_back(ccbRing(*h));
+    im.faceIndex[&*f] = int(im.cells.size());
+    im.areas.push_back(ringsArea(rings));
+    im.cells.push_back(std::move(rings));
+  }
+  switch (strategy) {
+    case PointLocation::Auto:
+      im.autoUpgrade = true;
+      im.locator.emplace<Walk>(arr);
+      break;
+    case PointLocation::Walk: im.locator.emplace<Walk>(arr); break;
+    case PointLocation::Trapezoid: im.locator.emplace<Trapezoid>(arr); break;
+    case PointLocation::Landmarks: im.locator.emplace<Landmarks>(arr); break;
+  }
+}
+
+Slice::Slice(const Slice& base, const std::vector<Ring>& extraObstacles, PointLocation strategy)
+    : impl_(base.impl_), angle_(base.angle_), theta_(base.theta_) {
+  if (base.impl_->cells.empty() || extraObstacles.empty()) return;
+  std::vector<Polygon> polys;
+  std::vector<Box> boxes;
+  for (const Ring& r : extraObstacles) {
+    polys.push_back(exact::toExact(r));
+    if (polys.back().is_clockwise_oriented()) polys.back().reverse_orientation();
+    boxes.push_back(boundingBox(r));
+  }
+  std::vector<PolygonWithHoles> sums = reachingSums(polys, boxes, base.impl_->neg, base.impl_->regionBox);
+  if (sums.empty()) return;  // nothing changes: share the base's cells
+  auto im = std::make_shared<Impl>();
+  im->neg = base.impl_->neg;
+  im->regionBox = base.impl_->regionBox;
+  im->free = base.impl_->free;
+  PolygonSet forbidden;
+  forbidden.join(sums.begin(), sums.end());
+  im->free.difference(forbidden);
+  impl_ = std::move(im);
+  index(strategy);
+}
+
 Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLocation strategy)
-    : impl_(std::make_unique<Impl>()), angle_(angle), theta_(angle.radians()) {
+    : impl_(std::make_shared<Impl>()), angle_(angle), theta_(angle.radians()) {
   const SliceWorld::Impl& w = world.impl();
   const auto [c, s] = angle.cosSin();
   // -R_theta: the robot rotated, then reflected about its reference point (a half turn, so
@@ -110,43 +177,16 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
   region.push_back(Point(xhi, yhi));
   region.push_back(Point(xlo, yhi));
 
-  // Only sums that can reach the region matter; boxes in doubles with a margin decide that.
-  const Box negBox = boundingBox(exact::toDouble(neg));
-  const Box regionBox{CGAL::to_double(xlo), CGAL::to_double(ylo), CGAL::to_double(xhi), CGAL::to_double(yhi)};
-  std::vector<PolygonWithHoles> sums;
-  for (size_t i = 0; i < w.obstacles.size(); ++i) {
-    const Box& o = w.obstacleBoxes[i];
-    const double m = 1e-9 * (1 + std::fabs(o.xmax) + std::fabs(o.ymax) + std::fabs(o.xmin) + std::fabs(o.ymin));
-    const Box sumBox{o.xmin + negBox.xmin - m, o.ymin + negBox.ymin - m, o.xmax + negBox.xmax + m,
-                     o.ymax + negBox.ymax + m};
-    if (!sumBox.overlaps(regionBox)) continue;
-    sums.push_back(CGAL::minkowski_sum_2(w.obstacles[i], neg));
-  }
+  impl_->neg = neg;
+  impl_->regionBox = {CGAL::to_double(xlo), CGAL::to_double(ylo), CGAL::to_double(xhi), CGAL::to_double(yhi)};
+  std::vector<PolygonWithHoles> sums = reachingSums(w.obstacles, w.obstacleBoxes, neg, impl_->regionBox);
   impl_->free = PolygonSet(region);
   if (!sums.empty()) {
     PolygonSet forbidden;
     forbidden.join(sums.begin(), sums.end());
     impl_->free.difference(forbidden);
   }
-
-  const Arrangement& arr = impl_->free.arrangement();
-  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-    if (!f->contained() || f->is_unbounded()) continue;
-    std::vector<Ring> rings{ccbRing(f->outer_ccb())};
-    for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) rings.push_back(ccbRing(*h));
-    impl_->faceIndex[&*f] = int(impl_->cells.size());
-    impl_->areas.push_back(ringsArea(rings));
-    impl_->cells.push_back(std::move(rings));
-  }
-  switch (strategy) {
-    case PointLocation::Auto:
-      impl_->autoUpgrade = true;
-      impl_->locator.emplace<Walk>(arr);
-      break;
-    case PointLocation::Walk: impl_->locator.emplace<Walk>(arr); break;
-    case PointLocation::Trapezoid: impl_->locator.emplace<Trapezoid>(arr); break;
-    case PointLocation::Landmarks: impl_->locator.emplace<Landmarks>(arr); break;
-  }
+  index(strategy);
 }
 
 Slice::~Slice() = default;

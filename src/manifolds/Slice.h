@@ -40,6 +40,11 @@ class Slice {
  public:
   Slice(const SliceWorld& world, const exact::RationalAngle& angle,
         PointLocation strategy = PointLocation::Auto);
+  /// The same slice with more obstacles (e.g. another robot held fixed): an overlay that only
+  /// subtracts the new Minkowski sums from `base`'s free space. Shares `base`'s cells when the
+  /// new obstacles cannot reach it.
+  Slice(const Slice& base, const std::vector<Ring>& extraObstacles,
+        PointLocation strategy = PointLocation::Auto);
   ~Slice();
   Slice(Slice&&) noexcept;
   Slice& operator=(Slice&&) noexcept;
@@ -57,7 +62,8 @@ class Slice {
 
  private:
   struct Impl;
-  std::unique_ptr<Impl> impl_;
+  void index(PointLocation strategy);
+  std::shared_ptr<Impl> impl_;
   exact::RationalAngle angle_;
   double theta_ = 0;
 };

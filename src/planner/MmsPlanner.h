@@ -15,9 +15,7 @@
 #include <vector>
 
 #include "check/PathChecker.h"
-#include "graph/ConnectivityGraph.h"
-#include "manifolds/Line.h"
-#include "manifolds/Slice.h"
+#include "planner/Subspace.h"
 #include "util/Random.h"
 #include "util/Termination.h"
 
@@ -30,6 +28,18 @@ struct MmsSettings {
   double freeLineShare = 0.5;  // share of line points drawn inside slice FSCs, the rest uniform
   size_t shortcutAttempts = 200;
   PointLocation pointLocation = PointLocation::Auto;
+};
+
+/// Angles n at a time: n evenly spaced with a random shift, then the midpoints between them,
+/// and so on, so that every prefix covers the circle evenly.
+class AngleSequence {
+ public:
+  AngleSequence(size_t n, double shift) : n_(std::max<size_t>(1, n)), shift_(shift) {}
+  double next();
+
+ private:
+  size_t n_, count_ = 0;
+  double shift_;
 };
 
 struct MmsStats {
@@ -61,32 +71,26 @@ class MmsPlanner {
   MmsResult solve(const Pose& start, const Pose& goal, const Termination& stop,
                   const std::function<void(const MmsStats&)>& progress = {});
 
-  const MmsStats& stats() const { return stats_; }
-  const std::vector<Slice>& slices() const { return slices_; }
-  const std::vector<Line>& lines() const { return lines_; }
+  const std::vector<Slice>& slices() const { return subspace().slices(); }
+  const std::vector<Line>& lines() const { return subspace().lines(); }
 
  private:
-  double nextAngle();
+  const Subspace& subspace() const { return *subspaces_.front(); }
+  Subspace& subspace() { return *subspaces_.front(); }
   Vec2 nextLinePoint();
   void addSlice(double theta);
-  size_t addLine(Vec2 p);
-  std::vector<Config> motion(const std::vector<size_t>& nodes, const Pose& start, const Pose& goal);
-  void shortcut(std::vector<Config>& w);
   MmsResult::Status solveTranslation(const Pose& start, const Pose& goal, MmsResult& result);
+  MmsResult finish(MmsResult result, MmsResult::Status status, double seconds);
 
   Scene scene_;  // a one-robot copy: the planned robot only
   MmsSettings settings_;
   CollisionChecker checker_;
   SliceWorld sliceWorld_;
-  LineWorld lineWorld_;
   Random rng_;
-  double angleShift_;
-  size_t angleCount_ = 0;
-
-  std::vector<Slice> slices_;
-  std::vector<Line> lines_;
-  std::vector<std::vector<size_t>> sliceNodes_, lineNodes_;  // cell -> graph node
+  AngleSequence angles_;
   ConnectivityGraph graph_;
+  SubspaceStats subspaceStats_;
+  std::vector<std::unique_ptr<Subspace>> subspaces_;  // exactly one: no robot is held
   MmsStats stats_;
 };
 

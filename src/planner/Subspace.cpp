@@ -1,0 +1,90 @@
+#include "planner/Subspace.h"
+
+#include "util/Termination.h"
+
+namespace mms {
+
+namespace {
+std::vector<Ring> placedRings(const Scene& scene, const std::vector<std::pair<size_t, Pose>>& held) {
+  std::vector<Ring> out;
+  for (const auto& [robot, pose] : held) {
+    Ring r;
+    transformRing(scene.robots[robot].shape, pose, r);
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+}  // namespace
+
+Subspace::Subspace(uint32_t id, const Scene& scene, const CollisionChecker& checker, size_t moving,
+                   std::vector<std::pair<size_t, Pose>> held, ConnectivityGraph& graph, SubspaceStats& stats)
+    : id_(id),
+      checker_(checker),
+      moving_(moving),
+      held_(std::move(held)),
+      heldRings_(placedRings(scene, held_)),
+      lineWorld_(scene, moving, heldRings_),
+      graph_(graph),
+      stats_(stats) {}
+
+bool Subspace::free(const Pose& q) const {
+  if (!checker_.robotFree(moving_, q)) return false;
+  for (const auto& [robot, pose] : held_)
+    if (!checker_.robotsDisjoint(moving_, q, robot, pose)) return false;
+  return true;
+}
+
+void Subspace::connect(size_t k, size_t l) {
+  const int a = lines_[l].arcContaining(slices_[k].theta());
+  if (a < 0) return;
+  const int f = slices_[k].locate(lines_[l].point());
+  if (f >= 0) graph_.addEdge(sliceNodes_[k][f], lineNodes_[l][a]);
+}
+
+size_t Subspace::addSlice(const Slice& base) {
+  Stopwatch watch;
+  slices_.emplace_back(base, heldRings_);
+  stats_.sliceSeconds += watch.seconds();
+  const size_t k = slices_.size() - 1;
+  std::vector<size_t> nodes;
+  for (size_t f = 0; f < slices_[k].fscCount(); ++f)
+    nodes.push_back(graph_.addNode({ConnectivityGraph::Kind::SliceCell, id_, uint32_t(k), uint32_t(f)}));
+  sliceNodes_.push_back(std::move(nodes));
+  ++stats_.slices;
+  stats_.sliceCells += slices_[k].fscCount();
+  Stopwatch watchConnect;
+  if (slices_[k].fscCount() > 0)
+    for (size_t l = 0; l < lines_.size(); ++l) connect(k, l);
+  stats_.connectSeconds += watchConnect.seconds();
+  return k;
+}
+
+size_t Subspace::addLine(Vec2 p) {
+  Stopwatch watch;
+  lines_.emplace_back(lineWorld_, [this](const Pose& q) { return free(q); }, p, &stats_.lineStats);
+  stats_.lineSeconds += watch.seconds();
+  const size_t l = lines_.size() - 1;
+  std::vector<size_t> nodes;
+  for (size_t a = 0; a < lines_[l].arcs().size(); ++a)
+    nodes.push_back(graph_.addNode({ConnectivityGraph::Kind::LineArc, id_, uint32_t(l), uint32_t(a)}));
+  lineNodes_.push_back(std::move(nodes));
+  ++stats_.lines;
+  stats_.lineArcs += lines_[l].arcs().size();
+  Stopwatch watchConnect;
+  if (!lines_[l].arcs().empty())
+    for (size_t k = 0; k < slices_.size(); ++k) connect(k, l);
+  stats_.connectSeconds += watchConnect.seconds();
+  return l;
+}
+
+long Subspace::sliceNodeAt(size_t k, Vec2 p) const {
+  const int f = slices_[k].locate(p);
+  return f < 0 ? -1 : long(sliceNodes_[k][f]);
+}
+
+long Subspace::lineNodeAt(size_t l, double theta) const {
+  const int a = lines_[l].arcContaining(theta);
+  return a < 0 ? -1 : long(lineNodes_[l][a]);
+}
+
+}  // namespace mms

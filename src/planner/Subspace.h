@@ -1,0 +1,64 @@
+#pragma once
+// One robot moves while the obstacles and any robots held at fixed poses stay: a 3-D C-space
+// approximated by slices (fixed angle) and lines (fixed position) whose free-space cells are
+// nodes of a shared connectivity graph. The one-robot planner uses one subspace; the two-robot
+// planner (recursive MMS, Section II of the paper) one per fixing of either robot.
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "graph/ConnectivityGraph.h"
+#include "manifolds/Line.h"
+#include "manifolds/Slice.h"
+
+namespace mms {
+
+struct SubspaceStats {
+  size_t slices = 0, lines = 0, sliceCells = 0, lineArcs = 0;
+  double sliceSeconds = 0, lineSeconds = 0, connectSeconds = 0;
+  LineStats lineStats;
+};
+
+class Subspace {
+ public:
+  /// Robot `moving` of `scene` moves; each (robot, pose) in `held` stays put as an obstacle.
+  Subspace(uint32_t id, const Scene& scene, const CollisionChecker& checker, size_t moving,
+           std::vector<std::pair<size_t, Pose>> held, ConnectivityGraph& graph, SubspaceStats& stats);
+
+  uint32_t id() const { return id_; }
+  size_t moving() const { return moving_; }
+  const std::vector<std::pair<size_t, Pose>>& held() const { return held_; }
+  const std::vector<Slice>& slices() const { return slices_; }
+  const std::vector<Line>& lines() const { return lines_; }
+
+  /// Adds the slice `base` (the obstacles alone) with the held robots subtracted, connecting it
+  /// to the lines already here. Returns its index.
+  size_t addSlice(const Slice& base);
+  /// Adds a line at p, connecting it to the slices already here. Returns its index.
+  size_t addLine(Vec2 p);
+
+  /// Graph node of the cell of slice k containing p, or -1.
+  long sliceNodeAt(size_t k, Vec2 p) const;
+  /// Graph node of the arc of line l containing theta, or -1.
+  long lineNodeAt(size_t l, double theta) const;
+
+  /// Whether the moving robot is free at q here (obstacles, bounds, held robots).
+  bool free(const Pose& q) const;
+
+ private:
+  void connect(size_t slice, size_t line);
+
+  uint32_t id_;
+  const CollisionChecker& checker_;
+  size_t moving_;
+  std::vector<std::pair<size_t, Pose>> held_;
+  std::vector<Ring> heldRings_;
+  LineWorld lineWorld_;
+  ConnectivityGraph& graph_;
+  SubspaceStats& stats_;
+  std::vector<Slice> slices_;
+  std::vector<Line> lines_;
+  std::vector<std::vector<size_t>> sliceNodes_, lineNodes_;  // cell -> graph node
+};
+
+}  // namespace mms
