@@ -2,9 +2,13 @@
 
 #include <cstdio>
 #include <iostream>
+#include <stdexcept>
+
+#include "scene/Errors.h"
 
 #include "check/PathChecker.h"
 #include "render/SvgRenderer.h"
+#include "scene/Generators.h"
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
 
@@ -68,6 +72,22 @@ int render(const RenderArgs& a) {
   o.animate = !a.noAnimation;
   writeFileAtomically(a.output, renderSvg(scene, a.path.empty() ? nullptr : &path, o));
   std::printf("%s: written\n", a.output.c_str());
+  return 0;
+}
+
+int scenario(const ScenarioArgs& a) {
+  Scene s;
+  if (a.name == "pacman") s = pacmanScene(a.tightness);
+  else if (a.name == "viking-helmet") s = vikingHelmetScene();
+  else s = randomPolygonsTwoRobots(a.seed);
+  // The generators must produce valid scenes: validate before writing.
+  try {
+    parseScene(sceneToJson(s), a.name);
+  } catch (const InputError& e) {
+    throw std::logic_error(std::string("generated scene is invalid: ") + e.what());
+  }
+  saveScene(s, a.output);
+  std::printf("%s: written (%s)\n", a.output.c_str(), s.name.c_str());
   return 0;
 }
 

@@ -33,11 +33,22 @@ struct PlanArgs {
   std::string scene, output, svg;
   uint64_t seed = 1;
   double timeLimit = 60;
-  size_t nTheta = 16, nLines = 1024;
+  size_t nTheta = 0, nLines = 0, nFixings = 0;  // 0: the planner's default
   bool quiet = false;
   bool svgRoadmap = false;  // draw line points and the path's slice cells
   std::string queries;      // mms-queries/1 file: several queries on one roadmap
 };
 int plan(const PlanArgs& a);
+
+}  // namespace mms::cli
+
+namespace mms::cli {
+
+struct ScenarioArgs {
+  std::string name, output;
+  double tightness = 0;
+  uint64_t seed = 1;
+};
+int scenario(const ScenarioArgs& a);
 
 }  // namespace mms::cli

@@ -3,6 +3,7 @@
 
 #include "Commands.h"
 #include "planner/MmsPlanner.h"
+#include "planner/TwoRobotPlanner.h"
 #include "render/SvgRenderer.h"
 #include "scene/Errors.h"
 #include "scene/Json.h"
@@ -67,18 +68,81 @@ std::string numbered(const std::string& path, size_t i) {
 
 }  // namespace
 
+namespace {
+
+void printTwoRobotStats(const TwoRobotStats& s) {
+  const SubspaceStats& m = s.manifolds;
+  std::printf("  manifolds: %zu subspaces (%zu + %zu fixings), %zu slices (%zu cells), %zu lines (%zu arcs); "
+              "graph %zu nodes, %zu edges (%zu between subspaces); %zu rounds\n",
+              s.subspaces, s.fixings[0], s.fixings[1], m.slices, m.sliceCells, m.lines, m.lineArcs, s.graphNodes,
+              s.graphEdges, s.crossEdges, s.rounds);
+  std::printf("  time: %.3f s total = base slices %.3f + overlays %.3f + lines %.3f + connect %.3f + "
+              "cross %.3f + search %.3f + motion %.3f + shortcut/certify %.3f\n",
+              s.totalSeconds, s.baseSliceSeconds, m.sliceSeconds, m.lineSeconds, m.connectSeconds,
+              s.crossSeconds, s.searchSeconds, s.motionSeconds, s.certifySeconds);
+  if (s.rejectedPaths) std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
+}
+
+int planTwo(const PlanArgs& a, const Scene& scene) {
+  if (!a.queries.empty())
+    throw InputError(a.queries + ": (file): --queries is for one-robot scenes; " + a.scene + " has two robots");
+  TwoRobotSettings settings;
+  settings.seed = a.seed;
+  if (a.nTheta) settings.nTheta = a.nTheta;
+  if (a.nLines) settings.nLines = a.nLines;
+  if (a.nFixings) settings.nFixings = a.nFixings;
+  TwoRobotPlanner planner(scene, settings);
+  Stopwatch clock;
+  auto progress = [&](const TwoRobotStats& s) {
+    if (a.quiet || clock.seconds() < 1.0) return;
+    std::fprintf(stderr, "mms plan: %.1f s, round %zu: %zu subspaces, %zu slices, %zu lines, graph %zu nodes / %zu edges\n",
+                 clock.seconds(), s.rounds, s.subspaces, s.manifolds.slices, s.manifolds.lines, s.graphNodes,
+                 s.graphEdges);
+  };
+  const TwoRobotResult res = planner.solve(Termination(a.timeLimit), progress);
+  if (res.status != MmsResult::Status::Found) {
+    std::printf("%s: no path found within %.3g s (%s)\n", a.scene.c_str(), a.timeLimit,
+                res.status == MmsResult::Status::Cancelled ? "interrupted" : "time limit");
+    printTwoRobotStats(res.stats);
+    return 1;
+  }
+  Path path;
+  path.waypoints = res.waypoints;
+  const TwoRobotStats& st = res.stats;
+  path.extra = {{"planner", "mms"},
+                {"seed", a.seed},
+                {"parameters", {{"n_theta", settings.nTheta}, {"n_lines", settings.nLines}, {"n_fixings", settings.nFixings}}},
+                {"statistics",
+                 {{"subspaces", st.subspaces},
+                  {"slices", st.manifolds.slices},
+                  {"lines", st.manifolds.lines},
+                  {"graph_nodes", st.graphNodes},
+                  {"graph_edges", st.graphEdges},
+                  {"path_cells", st.pathCells}}}};
+  if (!a.output.empty()) savePath(path, scene, a.output);
+  if (!a.svg.empty()) writeFileAtomically(a.svg, renderSvg(scene, &path));
+  std::printf("%s: path found and certified: %zu waypoints, translation %.4g, rotation %.4g rad, min clearance %.3g\n",
+              a.scene.c_str(), path.waypoints.size(), res.certificate.translation, res.certificate.rotation,
+              res.certificate.minClearance);
+  printTwoRobotStats(st);
+  return 0;
+}
+
+}  // namespace
+
 int plan(const PlanArgs& a) {
   const Scene scene = loadScene(a.scene);
+  if (scene.robots.size() == 2) return planTwo(a, scene);
   if (scene.robots.size() != 1)
     throw InputError(a.scene + ": robots: " + std::to_string(scene.robots.size()) +
-                     " robots; this version of mms plan handles scenes with one robot");
+                     " robots; mms plan handles scenes with one or two robots");
   std::vector<Query> queries{{scene.robots[0].start, scene.robots[0].goal}};
   if (!a.queries.empty()) queries = loadQueries(a.queries, scene);
 
   MmsSettings settings;
   settings.seed = a.seed;
-  settings.nTheta = a.nTheta;
-  settings.nLines = a.nLines;
+  if (a.nTheta) settings.nTheta = a.nTheta;
+  if (a.nLines) settings.nLines = a.nLines;
   MmsPlanner planner(scene, 0, settings);
   int exitCode = 0;
   for (size_t qi = 0; qi < queries.size(); ++qi) {

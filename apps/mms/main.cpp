@@ -69,12 +69,17 @@ int main(int argc, char** argv) {
   planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e6));
-  planCmd->add_option("--n-theta", pa.nTheta, "Slices (fixed angles) in the first round; doubles each round")
-      ->capture_default_str()
+  planCmd->add_option("--n-theta", pa.nTheta,
+                      "Angles sampled per robot (n_theta). One robot: slices in the first round, doubling each "
+                      "round (default 16). Two robots: the fixed angle set of each robot (default 16)")
       ->check(CLI::Range(1, 1000000));
-  planCmd->add_option("--n-lines", pa.nLines, "Lines (fixed positions) in the first round; doubles each round")
-      ->capture_default_str()
+  planCmd->add_option("--n-lines", pa.nLines,
+                      "Lines (fixed positions, n_l). One robot: in the first round, doubling each round (default "
+                      "1024). Two robots: per subspace (default 128)")
       ->check(CLI::Range(1, 10000000));
+  planCmd->add_option("--n-fixings", pa.nFixings,
+                      "Two robots: fixings per robot in the first round (n_f), doubling each round (default 8)")
+      ->check(CLI::Range(1, 1000000));
   planCmd->add_flag("-q,--quiet", pa.quiet, "No progress messages on stderr");
   planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
                     "In the SVG, also draw the lines' points and the free-space cells of the slices the path uses");
@@ -82,6 +87,20 @@ int main(int argc, char** argv) {
                       "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "
                       "\"queries\": [{\"start\": [x,y,theta], \"goal\": [x,y,theta]}, ...]}; with -o/--svg, "
                       "files are numbered (out.0.json, ...)");
+
+  ScenarioArgs sa;
+  auto* scenarioCmd = app.add_subcommand(
+      "scenario", "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
+                  "random-polygons (--seed)");
+  scenarioCmd->add_option("NAME", sa.name, "pacman, viking-helmet or random-polygons")
+      ->required()
+      ->check(CLI::IsMember({"pacman", "viking-helmet", "random-polygons"}));
+  scenarioCmd->add_option("-o,--output", sa.output, "Scene file to write")->required();
+  scenarioCmd->add_option("--tightness", sa.tightness,
+                          "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.999));
+  scenarioCmd->add_option("--seed", sa.seed, "random-polygons: the seed of the geometry")->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -101,6 +120,7 @@ int main(int argc, char** argv) {
     if (*checkCmd) return check(ca);
     if (*renderCmd) return render(ra);
     if (*planCmd) return plan(pa);
+    if (*scenarioCmd) return scenario(sa);
   } catch (const mms::InputError& e) {
     std::cerr << oneLine(e.what()) << "\n";
     return 2;

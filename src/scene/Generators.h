@@ -17,10 +17,27 @@ struct RandomPolygonsSettings {
   int obstacleVertices = 8;
   int robotVertices = 10;
   double extent = 50;  // bounds are [-extent, extent]^2
+  int robots = 1;
 };
 
-/// Random non-convex obstacles and one random non-convex robot whose start and goal are free
-/// (found by the caller's validation: this only places them where the generator left room).
+/// Random non-convex obstacles on a jittered grid and `robots` random non-convex robots placed
+/// at grid corners (where the generator leaves room): the first robot crosses the scene from
+/// bottom-left to top-right, the second from bottom-right to top-left.
 Scene randomPolygonsScene(const RandomPolygonsSettings& settings);
+
+/// The paper's two-robot "random polygons" scenario rebuilt from a seed (bounds +-55 as in
+/// OMPL.app's RandomPolygons_planar): easy, little coordination.
+Scene randomPolygonsTwoRobots(uint64_t seed = 1);
+
+/// The paper's Pacman scenario: a C-shaped robot and a square swap ends of a corridor too
+/// narrow to pass; the Pacman must swallow the square, turn around it and release it.
+/// tightness in [0, 1): the square grows from the base size (0) towards exactly the width of
+/// the Pacman's mouth (1, unsolvable).
+Scene pacmanScene(double tightness);
+
+/// The paper's Viking helmet scenario: each robot goes down its own narrow passage from a horn
+/// of the helmet into the lower chamber, where they exchange sides past a pillar that leaves
+/// room for one robot at a time.
+Scene vikingHelmetScene();
 
 }  // namespace mms

@@ -1,0 +1,160 @@
+#include "planner/TwoRobotPlanner.h"
+
+#include <cmath>
+
+#include "planner/Motion.h"
+
+namespace mms {
+
+TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
+    : scene_(scene), settings_(settings), checker_(scene_), rng_(settings.seed) {
+  for (size_t r = 0; r < 2; ++r) {
+    translates_[r] = scene_.robots[r].motion == Motion::Translate;
+    worlds_[r] = std::make_unique<SliceWorld>(scene_, r);
+    Stopwatch watch;
+    if (translates_[r]) {
+      base_[r].emplace_back(*worlds_[r], exact::rationalAngleNear(scene_.robots[r].start.theta, 30));
+    } else {
+      AngleSequence angles(settings_.nTheta, rng_.uniform(0, 2 * M_PI));
+      for (size_t k = 0; k < settings_.nTheta; ++k)
+        base_[r].emplace_back(*worlds_[r], exact::rationalAngleNear(angles.next(), 30));
+    }
+    stats_.baseSliceSeconds += watch.seconds();
+  }
+}
+
+TwoRobotPlanner::~TwoRobotPlanner() = default;
+
+// A free pose of `robot` among the obstacles at one of its angles, uniform over the slice.
+bool TwoRobotPlanner::sampleFixing(size_t robot, Fixing& out) {
+  const Box& b = scene_.bounds;
+  for (int attempt = 0; attempt < 200; ++attempt) {
+    const size_t k = rng_.below(base_[robot].size());
+    const Vec2 p{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)};
+    if (base_[robot][k].locate(p) < 0) continue;
+    const double theta = translates_[robot] ? scene_.robots[robot].start.theta : base_[robot][k].theta();
+    out = {robot, {p.x, p.y, theta}, long(k), -1};
+    return true;
+  }
+  return false;
+}
+
+Vec2 TwoRobotPlanner::linePoint(size_t robot) {
+  const Box& b = scene_.bounds;
+  auto uniform = [&] { return Vec2{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)}; };
+  if (rng_.uniform() < 0.5)  // half where the robot fits at some angle, half uniform
+    for (int attempt = 0; attempt < 20; ++attempt) {
+      const Vec2 p = uniform();
+      if (base_[robot][rng_.below(base_[robot].size())].locate(p) >= 0) return p;
+    }
+  return uniform();
+}
+
+long TwoRobotPlanner::nodeFor(const Subspace& sub, const Fixing& f) const {
+  if (f.angle >= 0) return sub.sliceNodeAt(size_t(f.angle), {f.pose.x, f.pose.y});
+  return sub.lineNodeAt(size_t(f.specialLine), f.pose.theta);
+}
+
+void TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop) {
+  const size_t moving = 1 - held.robot;
+  subspaces_.push_back(std::make_unique<Subspace>(uint32_t(subspaces_.size()), scene_, checker_, moving,
+                                                  std::vector<std::pair<size_t, Pose>>{{held.robot, held.pose}},
+                                                  graph_, stats_.manifolds));
+  fixings_.push_back(held);
+  ++stats_.subspaces;
+  ++stats_.fixings[held.robot];
+  Subspace& sub = *subspaces_.back();
+  for (const Slice& base : base_[moving]) {
+    if (stop()) break;
+    sub.addSlice(base);
+  }
+  if (!translates_[moving]) {
+    const Robot& r = scene_.robots[moving];
+    sub.addLine({r.start.x, r.start.y});  // line 0
+    sub.addLine({r.goal.x, r.goal.y});    // line 1
+    for (size_t i = 0; i < settings_.nLines && !stop(); ++i) sub.addLine(linePoint(moving));
+  }
+  // Meet every subspace of the other family at the pair of their held poses.
+  Stopwatch watch;
+  for (size_t j = 0; j + 1 < subspaces_.size(); ++j) {
+    if (subspaces_[j]->moving() != held.robot) continue;
+    const long here = nodeFor(sub, fixings_[j]);
+    if (here < 0) continue;
+    const long there = nodeFor(*subspaces_[j], held);
+    if (there < 0) continue;
+    graph_.addEdge(size_t(here), size_t(there));
+    ++stats_.crossEdges;
+  }
+  stats_.crossSeconds += watch.seconds();
+}
+
+TwoRobotResult TwoRobotPlanner::finish(TwoRobotResult r, MmsResult::Status status) {
+  stats_.graphNodes = graph_.nodeCount();
+  stats_.graphEdges = graph_.edgeCount();
+  stats_.totalSeconds = clock_.seconds();
+  r.status = status;
+  r.stats = stats_;
+  return r;
+}
+
+TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
+                                      const std::function<void(const TwoRobotStats&)>& progress) {
+  clock_ = Stopwatch();
+  TwoRobotResult result;
+  // Start and goal fixings: each robot held at its start and at its goal. A translating
+  // robot's poses lie in its one slice; a rigid robot's on lines 0 (start) and 1 (goal).
+  std::array<Fixing, 2> start, goal;
+  for (size_t r = 0; r < 2; ++r) {
+    const Robot& rb = scene_.robots[r];
+    start[r] = {r, rb.start, translates_[r] ? 0L : -1L, translates_[r] ? -1L : 0L};
+    goal[r] = {r, rb.goal, translates_[r] ? 0L : -1L, translates_[r] ? -1L : 1L};
+  }
+  for (const Fixing& f : {start[0], start[1], goal[0], goal[1]}) addSubspace(f, stop);
+  // Robot 0 moves in the subspace holding robot 1 at its start (index 1) / goal (index 3).
+  const long from = nodeFor(*subspaces_[1], start[0]), to = nodeFor(*subspaces_[3], goal[0]);
+  if (from < 0 || to < 0) return finish(result, MmsResult::Status::NotFound);
+
+  const Config q0 = startConfig(scene_), q1 = goalConfig(scene_);
+  size_t target = settings_.nFixings;
+  Stopwatch sinceReport;
+  while (true) {
+    ++stats_.rounds;
+    for (size_t r = 0; r < 2 && !stop(); ++r)
+      while (stats_.fixings[r] < target + 2 && !stop()) {
+        Fixing f;
+        if (!sampleFixing(r, f)) break;
+        addSubspace(f, stop);
+        if (progress && sinceReport.seconds() >= 1.0) {
+          progress(finish(result, MmsResult::Status::NotFound).stats);
+          sinceReport = Stopwatch();
+        }
+      }
+    Stopwatch search;
+    const auto nodes = graph_.path(size_t(from), size_t(to));
+    stats_.searchSeconds += search.seconds();
+    if (nodes) {
+      Stopwatch build;
+      auto w = graphPathMotion(graph_, subspaces_, *nodes, q0, q1);
+      stats_.motionSeconds += build.seconds();
+      Stopwatch certify;
+      if (w) {
+        shortcutPath(scene_, checker_, rng_, settings_.shortcutAttempts, *w);
+        Path path;
+        path.waypoints = *w;
+        result.certificate = checkPath(scene_, checker_, path);
+      }
+      stats_.certifySeconds += certify.seconds();
+      if (w && result.certificate.ok) {
+        stats_.pathCells = nodes->size();
+        result.waypoints = std::move(*w);
+        return finish(result, MmsResult::Status::Found);
+      }
+      ++stats_.rejectedPaths;
+    }
+    if (progress) progress(finish(result, MmsResult::Status::NotFound).stats);
+    if (stop()) return finish(result, stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
+    target *= 2;
+  }
+}
+
+}  // namespace mms

@@ -1,0 +1,86 @@
+#pragma once
+// Recursive MMS for two robots in the plane (6-D C-space), Section II of Salzman, Hemmer,
+// Halperin, "On the power of manifold samples in exploring configuration spaces and the
+// dimensionality of narrow passages".
+//
+// Fixing robot B at a free pose b leaves the 3-D subspace C^a x b, approximated by a one-robot
+// MMS (slices and lines) with B as an obstacle; symmetrically for A. To make the approximations
+// intersect, each robot gets one angle set for the whole run (Theta_a, Theta_b, each evenly
+// spaced with its own random shift): every subspace in which A moves has a slice at each angle
+// of Theta_a, and A is only ever fixed at angles of Theta_a. Then the subspaces a x C^b and
+// C^a x b meet at (a, b): the cell of the a-slice containing a's position and the cell of the
+// b-slice containing b's position are joined in the graph. The obstacles' Minkowski sums are
+// computed once per angle; a subspace's slice only subtracts the held robot's sum (overlay).
+// Start and goal enter as fixings plus lines at the moving robot's start and goal positions in
+// every subspace, so they connect although their angles are not in Theta. A robot that only
+// translates has a single angle and needs no lines: its slices are its exact free space.
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "check/PathChecker.h"
+#include "planner/MmsPlanner.h"
+#include "planner/Subspace.h"
+
+namespace mms {
+
+struct TwoRobotSettings {
+  uint64_t seed = 1;
+  size_t nTheta = 16;   // n_theta: angles per robot, shared by all its subspaces
+  size_t nLines = 128;  // n_l: random lines per subspace
+  size_t nFixings = 8;  // n_f: fixings per robot in the first round; doubles every round
+  size_t shortcutAttempts = 300;
+};
+
+struct TwoRobotStats {
+  size_t rounds = 0, subspaces = 0, crossEdges = 0, graphNodes = 0, graphEdges = 0;
+  size_t pathCells = 0, rejectedPaths = 0;
+  std::array<size_t, 2> fixings{0, 0};
+  SubspaceStats manifolds;  // slices, lines, cells, arcs over all subspaces
+  double baseSliceSeconds = 0, crossSeconds = 0, searchSeconds = 0, motionSeconds = 0, certifySeconds = 0;
+  double totalSeconds = 0;
+};
+
+struct TwoRobotResult {
+  MmsResult::Status status = MmsResult::Status::NotFound;
+  std::vector<Config> waypoints;  // both robots' (x, y, theta), certified when Found
+  PathCheckResult certificate;
+  TwoRobotStats stats;
+};
+
+class TwoRobotPlanner {
+ public:
+  explicit TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings = {});
+  ~TwoRobotPlanner();
+
+  TwoRobotResult solve(const Termination& stop, const std::function<void(const TwoRobotStats&)>& progress = {});
+
+ private:
+  struct Fixing {
+    size_t robot;
+    Pose pose;
+    long angle;        // index into the robot's angle set, or -1
+    long specialLine;  // -1, or 0 / 1: start / goal position (lines 0 and 1 of every subspace)
+  };
+  bool sampleFixing(size_t robot, Fixing& out);
+  void addSubspace(const Fixing& held, const Termination& stop);
+  long nodeFor(const Subspace& sub, const Fixing& f) const;
+  Vec2 linePoint(size_t robot);
+  TwoRobotResult finish(TwoRobotResult r, MmsResult::Status status);
+
+  Scene scene_;
+  TwoRobotSettings settings_;
+  CollisionChecker checker_;
+  Random rng_;
+  std::array<bool, 2> translates_;
+  std::array<std::unique_ptr<SliceWorld>, 2> worlds_;
+  std::array<std::vector<Slice>, 2> base_;  // per robot: its slice at each of its angles, obstacles only
+  std::vector<Fixing> fixings_;             // fixings_[i] is held in subspaces_[i]
+  std::vector<std::unique_ptr<Subspace>> subspaces_;
+  ConnectivityGraph graph_;
+  TwoRobotStats stats_;
+  Stopwatch clock_;
+};
+
+}  // namespace mms
