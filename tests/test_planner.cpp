@@ -118,10 +118,12 @@ TEST(Plan, RoadmapAnswersASecondQueryWithoutRebuilding) {
   EXPECT_EQ(planner.slices().size(), slices);  // answered from the existing slices
 }
 
-TEST(Plan, RejectsScenesItCannotPlanYet) {
-  const Outcome r = runMms("plan " + quote(scenario("two-robots/niche-swap.json")));
+TEST(Plan, QueriesAreForOneRobotScenes) {
+  TempDir dir;
+  const Outcome r = runMms("plan " + quote(scenario("two-robots/niche-swap.json")) + " --queries " +
+                           quote(dir.file("q.json", "{}")));
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("robots: 2 robots"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--queries is for one-robot scenes"), std::string::npos) << r.err;
 }
 
 TEST(Plan, QueriesFileAnswersEachQueryOnOneRoadmap) {

@@ -52,14 +52,29 @@ std::optional<std::vector<Config>> graphPathMotion(const ConnectivityGraph& grap
   return w;
 }
 
+namespace {
+// Robots whose configuration changes between waypoints i and j (inclusive stretch).
+size_t movingRobots(const std::vector<Config>& w, size_t i, size_t j) {
+  size_t count = 0;
+  for (size_t r = 0; 3 * r < w[i].size(); ++r) {
+    bool moves = false;
+    for (size_t k = i + 1; k <= j && !moves; ++k)
+      for (size_t c = 3 * r; c < 3 * r + 3; ++c) moves |= w[k][c] != w[i][c];
+    count += moves;
+  }
+  return count;
+}
+}  // namespace
+
 void shortcutPath(const Scene& scene, const CollisionChecker& checker, Random& rng, size_t attempts,
-                  std::vector<Config>& w) {
+                  std::vector<Config>& w, bool oneRobotAtATime) {
   PathCheckSettings quick;
   quick.maxEvaluations = 20000;
   for (size_t attempt = 0; attempt < attempts && w.size() > 2; ++attempt) {
     size_t i = rng.below(w.size()), j = rng.below(w.size());
     if (i > j) std::swap(i, j);
     if (j < i + 2) continue;
+    if (oneRobotAtATime && movingRobots(w, i, j) > 1) continue;
     if (checkMotion(scene, checker, {w[i], w[j]}, quick).ok) w.erase(w.begin() + i + 1, w.begin() + j);
   }
 }

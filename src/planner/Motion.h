@@ -22,8 +22,10 @@ std::optional<std::vector<Config>> graphPathMotion(const ConnectivityGraph& grap
                                                    const Config& goal);
 
 /// Random shortcuts: replaces the stretch between two waypoints by the straight motion when the
-/// checker certifies it. Bounded by attempts, not time, so a seed fixes the result.
+/// checker certifies it. Bounded by attempts, not time, so a seed fixes the result. With
+/// `oneRobotAtATime`, only stretches in which a single robot moves are replaced, so the path
+/// keeps moving one robot at a time.
 void shortcutPath(const Scene& scene, const CollisionChecker& checker, Random& rng, size_t attempts,
-                  std::vector<Config>& waypoints);
+                  std::vector<Config>& waypoints, bool oneRobotAtATime = false);
 
 }  // namespace mms

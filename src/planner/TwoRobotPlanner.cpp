@@ -138,7 +138,7 @@ TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
       stats_.motionSeconds += build.seconds();
       Stopwatch certify;
       if (w) {
-        shortcutPath(scene_, checker_, rng_, settings_.shortcutAttempts, *w);
+        shortcutPath(scene_, checker_, rng_, settings_.shortcutAttempts, *w, /*oneRobotAtATime=*/true);
         Path path;
         path.waypoints = *w;
         result.certificate = checkPath(scene_, checker_, path);

@@ -1,0 +1,117 @@
+// Recursive MMS for two robots: the paper's scenarios solved with certified paths that move one
+// robot at a time; bundled scenario files in sync with their generator.
+#include <gtest/gtest.h>
+
+#include "Support.h"
+#include "planner/TwoRobotPlanner.h"
+#include "scene/SceneIO.h"
+
+using namespace mms;
+using namespace mms::test;
+
+namespace {
+
+TwoRobotResult plan(const Scene& s, uint64_t seed) {
+  TwoRobotSettings st;
+  st.seed = seed;
+  TwoRobotPlanner planner(s, st);
+  return planner.solve(Termination(60));
+}
+
+std::string label(const std::string& file) {
+  std::string n = file.substr(file.find('/') + 1);
+  n = n.substr(0, n.rfind('.'));
+  for (char& c : n)
+    if (c == '-' || c == '.') c = '_';
+  return n;
+}
+
+}  // namespace
+
+struct TwoRobotCase {
+  const char* scene;
+  int seeds;
+};
+void PrintTo(const TwoRobotCase& c, std::ostream* os) { *os << c.scene; }
+
+class TwoRobotScene : public ::testing::TestWithParam<TwoRobotCase> {};
+
+TEST_P(TwoRobotScene, SolvedWithCertifiedPathsMovingOneRobotAtATime) {
+  const Scene s = loadScene(scenario(GetParam().scene));
+  const CollisionChecker checker(s);
+  for (int seed = 1; seed <= GetParam().seeds; ++seed) {
+    const TwoRobotResult r = plan(s, uint64_t(seed));
+    ASSERT_EQ(r.status, MmsResult::Status::Found) << GetParam().scene << " seed " << seed;
+    Path p;
+    p.waypoints = r.waypoints;
+    const PathCheckResult c = checkPath(s, checker, p);
+    EXPECT_TRUE(c.ok) << c.reason;
+    for (size_t j = 1; j < p.waypoints.size(); ++j) {
+      int moving = 0;
+      for (size_t robot = 0; robot < 2; ++robot)
+        for (size_t k = 3 * robot; k < 3 * robot + 3; ++k)
+          if (p.waypoints[j][k] != p.waypoints[j - 1][k]) {
+            ++moving;
+            break;
+          }
+      EXPECT_LE(moving, 1) << "segment " << j - 1;
+    }
+    EXPECT_GT(r.stats.crossEdges, 0u);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Paper, TwoRobotScene,
+    ::testing::Values(TwoRobotCase{"two-robots/viking-helmet.json", 3}, TwoRobotCase{"two-robots/pacman-0.json", 2},
+                      TwoRobotCase{"two-robots/pacman-0.5.json", 2}, TwoRobotCase{"two-robots/pacman-0.9.json", 2},
+                      TwoRobotCase{"two-robots/random-polygons.json", 1},
+                      TwoRobotCase{"two-robots/niche-swap.json", 2}, TwoRobotCase{"translating/cup.json", 2}),
+    [](const auto& info) { return label(info.param.scene); });
+
+TEST(TwoRobots, SameSeedSamePath) {
+  const Scene s = loadScene(scenario("two-robots/pacman-0.5.json"));
+  const TwoRobotResult a = plan(s, 3), b = plan(s, 3);
+  ASSERT_EQ(a.status, MmsResult::Status::Found);
+  EXPECT_EQ(a.waypoints, b.waypoints);
+}
+
+TEST(TwoRobots, PlanCommandWritesACertifiedPath) {
+  TempDir dir;
+  const std::string scene = quote(scenario("two-robots/viking-helmet.json"));
+  const Outcome r = runMms("plan " + scene + " -q -o " + quote(dir.path("p.json")) + " --svg " + quote(dir.path("p.svg")));
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("subspaces"), std::string::npos);
+  EXPECT_EQ(runMms("check " + scene + " " + quote(dir.path("p.json"))).code, 0);
+  EXPECT_NE(readFile(dir.path("p.svg")).find("animateTransform"), std::string::npos);
+}
+
+TEST(Scenarios, BundledFilesMatchTheGenerator) {
+  TempDir dir;
+  struct Gen {
+    const char* args;
+    const char* file;
+  };
+  for (const Gen& g : {Gen{"pacman --tightness 0", "pacman-0.json"}, Gen{"pacman --tightness 0.5", "pacman-0.5.json"},
+                       Gen{"pacman --tightness 0.8", "pacman-0.8.json"}, Gen{"pacman --tightness 0.9", "pacman-0.9.json"},
+                       Gen{"viking-helmet", "viking-helmet.json"}, Gen{"random-polygons --seed 1", "random-polygons.json"}}) {
+    const std::string out = dir.path(g.file);
+    ASSERT_EQ(runMms(std::string("scenario ") + g.args + " -o " + quote(out)).code, 0) << g.args;
+    EXPECT_EQ(readFile(out), readFile(scenario(std::string("two-robots/") + g.file))) << g.file;
+  }
+}
+
+TEST(Scenarios, PacmanSquareGrowsWithTightnessAndBadValuesAreRejected) {
+  TempDir dir;
+  auto side = [&](const char* t) {
+    const std::string f = dir.path(std::string("p") + t + ".json");
+    EXPECT_EQ(runMms(std::string("scenario pacman --tightness ") + t + " -o " + quote(f)).code, 0);
+    const Ring sq = loadScene(f).robots[1].shape;
+    return sq[1].x - sq[0].x;
+  };
+  EXPECT_NEAR(side("0"), 0.8, 1e-12);
+  EXPECT_NEAR(side("0.5"), 1.2, 1e-12);
+  EXPECT_LT(side("0.99"), 1.6);
+  const Outcome bad = runMms("scenario pacman --tightness 1.5 -o " + quote(dir.path("x.json")));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir.path("x.json")));
+}
