@@ -133,22 +133,15 @@ MmsResult MmsPlanner::solve(const Pose& start, const Pose& goal, const Terminati
     const auto nodes = graph_.path(size_t(from), size_t(to));
     stats_.searchSeconds += search.seconds();
     if (nodes) {
-      Stopwatch build;
-      const Config q0{start.x, start.y, start.theta}, q1{goal.x, goal.y, goal.theta};
-      auto w = graphPathMotion(graph_, subspaces_, *nodes, q0, q1);
-      stats_.motionSeconds += build.seconds();
-      Stopwatch certify;
-      if (w) {
-        shortcutPath(scene_, checker_, rng_, settings_.shortcutAttempts, *w);
-        Path path;
-        path.waypoints = *w;
-        result.certificate = checkPath(scene_, checker_, path);
-      }
-      stats_.certifySeconds += certify.seconds();
-      if (w && result.certificate.ok) {
+      CertifiedMotion m = certifiedMotion(scene_, checker_, graph_, subspaces_, *nodes, rng_,
+                                          {settings_.shortcutAttempts, false});
+      stats_.motionSeconds += m.buildSeconds;
+      stats_.certifySeconds += m.certifySeconds;
+      result.certificate = m.certificate;
+      if (m.ok) {
         stats_.pathCells = nodes->size();
         for (size_t v : *nodes) result.cells.push_back(graph_.node(v));
-        result.waypoints = std::move(*w);
+        result.waypoints = std::move(m.waypoints);
         return finish(result, MmsResult::Status::Found, total.seconds());
       }
       ++stats_.rejectedPaths;

@@ -4,6 +4,7 @@
 
 #include "check/PathChecker.h"
 #include "path/CellRoute.h"
+#include "util/Termination.h"
 
 namespace mms {
 
@@ -77,6 +78,25 @@ void shortcutPath(const Scene& scene, const CollisionChecker& checker, Random& r
     if (oneRobotAtATime && movingRobots(w, i, j) > 1) continue;
     if (checkMotion(scene, checker, {w[i], w[j]}, quick).ok) w.erase(w.begin() + i + 1, w.begin() + j);
   }
+}
+
+CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& checker, const ConnectivityGraph& graph,
+                                const std::vector<std::unique_ptr<Subspace>>& subspaces,
+                                const std::vector<size_t>& nodes, Random& rng, const ShortcutSettings& shortcuts) {
+  CertifiedMotion m;
+  Stopwatch build;
+  auto w = graphPathMotion(graph, subspaces, nodes, startConfig(scene), goalConfig(scene));
+  m.buildSeconds = build.seconds();
+  if (!w) return m;
+  Stopwatch certify;
+  shortcutPath(scene, checker, rng, shortcuts.attempts, *w, shortcuts.oneRobotAtATime);
+  Path path;
+  path.waypoints = *w;
+  m.certificate = checkPath(scene, checker, path);
+  m.certifySeconds = certify.seconds();
+  m.ok = m.certificate.ok;
+  m.waypoints = std::move(*w);
+  return m;
 }
 
 }  // namespace mms

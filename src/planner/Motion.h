@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "check/PathChecker.h"
 #include "planner/Subspace.h"
 #include "scene/Scene.h"
 #include "util/Random.h"
@@ -20,6 +21,22 @@ std::optional<std::vector<Config>> graphPathMotion(const ConnectivityGraph& grap
                                                    const std::vector<std::unique_ptr<Subspace>>& subspaces,
                                                    const std::vector<size_t>& nodes, const Config& start,
                                                    const Config& goal);
+
+/// A graph path turned into a reported motion: built, shortened by shortcuts, and certified by
+/// the path checker against the scene's start and goal. `ok` only if all three succeeded.
+struct CertifiedMotion {
+  bool ok = false;
+  std::vector<Config> waypoints;
+  PathCheckResult certificate;
+  double buildSeconds = 0, certifySeconds = 0;  // motion; shortcuts and certification
+};
+struct ShortcutSettings {
+  size_t attempts = 200;
+  bool oneRobotAtATime = false;
+};
+CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& checker, const ConnectivityGraph& graph,
+                                const std::vector<std::unique_ptr<Subspace>>& subspaces,
+                                const std::vector<size_t>& nodes, Random& rng, const ShortcutSettings& shortcuts);
 
 /// Random shortcuts: replaces the stretch between two waypoints by the straight motion when the
 /// checker certifies it. Bounded by attempts, not time, so a seed fixes the result. With

@@ -114,7 +114,6 @@ TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
   const long from = nodeFor(*subspaces_[1], start[0]), to = nodeFor(*subspaces_[3], goal[0]);
   if (from < 0 || to < 0) return finish(result, MmsResult::Status::NotFound);
 
-  const Config q0 = startConfig(scene_), q1 = goalConfig(scene_);
   size_t target = settings_.nFixings;
   Stopwatch sinceReport;
   while (true) {
@@ -133,20 +132,14 @@ TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
     const auto nodes = graph_.path(size_t(from), size_t(to));
     stats_.searchSeconds += search.seconds();
     if (nodes) {
-      Stopwatch build;
-      auto w = graphPathMotion(graph_, subspaces_, *nodes, q0, q1);
-      stats_.motionSeconds += build.seconds();
-      Stopwatch certify;
-      if (w) {
-        shortcutPath(scene_, checker_, rng_, settings_.shortcutAttempts, *w, /*oneRobotAtATime=*/true);
-        Path path;
-        path.waypoints = *w;
-        result.certificate = checkPath(scene_, checker_, path);
-      }
-      stats_.certifySeconds += certify.seconds();
-      if (w && result.certificate.ok) {
+      CertifiedMotion m = certifiedMotion(scene_, checker_, graph_, subspaces_, *nodes, rng_,
+                                          {settings_.shortcutAttempts, /*oneRobotAtATime=*/true});
+      stats_.motionSeconds += m.buildSeconds;
+      stats_.certifySeconds += m.certifySeconds;
+      result.certificate = m.certificate;
+      if (m.ok) {
         stats_.pathCells = nodes->size();
-        result.waypoints = std::move(*w);
+        result.waypoints = std::move(m.waypoints);
         return finish(result, MmsResult::Status::Found);
       }
       ++stats_.rejectedPaths;
