@@ -13,6 +13,16 @@
 namespace mms::test {
 
 inline std::string sourceDir() { return MMS_SOURCE_DIR; }
+
+#ifdef MMS_SANITIZED
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+/// Seeds a planner test runs: all of them normally, one under the sanitizers (10-20x slower).
+inline int seedsToRun(int seeds) { return kSanitized ? 1 : seeds; }
+/// A planner test's time limit: generous under the sanitizers.
+inline double planSeconds(double seconds) { return kSanitized ? 10 * seconds : seconds; }
 inline std::string scenario(const std::string& rel) { return sourceDir() + "/scenarios/" + rel; }
 
 /// A fresh directory per test process, removed at exit.

@@ -28,8 +28,8 @@ class SolvableScene : public ::testing::TestWithParam<const char*> {};
 TEST_P(SolvableScene, SolvedWithCertifiedPathsForSeveralSeeds) {
   const Scene s = loadScene(scenario(GetParam()));
   const CollisionChecker checker(s);
-  for (uint64_t seed = 1; seed <= 4; ++seed) {
-    const MmsResult r = plan(s, seed, 30);
+  for (uint64_t seed = 1; seed <= uint64_t(seedsToRun(4)); ++seed) {
+    const MmsResult r = plan(s, seed, planSeconds(30));
     ASSERT_EQ(r.status, MmsResult::Status::Found) << GetParam() << " seed " << seed;
     Path p;
     p.waypoints = r.waypoints;

@@ -15,7 +15,7 @@ TwoRobotResult plan(const Scene& s, uint64_t seed) {
   TwoRobotSettings st;
   st.seed = seed;
   TwoRobotPlanner planner(s, st);
-  return planner.solve(Termination(60));
+  return planner.solve(Termination(planSeconds(60)));
 }
 
 std::string label(const std::string& file) {
@@ -39,7 +39,7 @@ class TwoRobotScene : public ::testing::TestWithParam<TwoRobotCase> {};
 TEST_P(TwoRobotScene, SolvedWithCertifiedPathsMovingOneRobotAtATime) {
   const Scene s = loadScene(scenario(GetParam().scene));
   const CollisionChecker checker(s);
-  for (int seed = 1; seed <= GetParam().seeds; ++seed) {
+  for (int seed = 1; seed <= seedsToRun(GetParam().seeds); ++seed) {
     const TwoRobotResult r = plan(s, uint64_t(seed));
     ASSERT_EQ(r.status, MmsResult::Status::Found) << GetParam().scene << " seed " << seed;
     Path p;

@@ -2,6 +2,7 @@
 #include <filesystem>
 
 #include "Commands.h"
+#include "baselines/OmplPlanner.h"
 #include "planner/MmsPlanner.h"
 #include "planner/TwoRobotPlanner.h"
 #include "render/SvgRenderer.h"
@@ -70,6 +71,68 @@ std::string numbered(const std::string& path, size_t i) {
 
 namespace {
 
+void writeStats(const PlanArgs& a, const nlohmann::json& j) {
+  if (!a.statsJson.empty()) writeFileAtomically(a.statsJson, j.dump(1) + "\n");
+}
+
+nlohmann::json runSummary(const PlanArgs& a, const char* status, double seconds) {
+  return {{"scene", a.scene}, {"planner", a.planner}, {"seed", a.seed}, {"status", status}, {"seconds", seconds},
+          {"time_limit", a.timeLimit}};
+}
+
+void addPath(nlohmann::json& j, const PathCheckResult& c, size_t waypoints) {
+  j["path"] = {{"waypoints", waypoints},
+               {"translation", c.translation},
+               {"rotation", c.rotation},
+               {"min_clearance", c.minClearance}};
+}
+
+int planOmpl(const PlanArgs& a, const Scene& scene) {
+  if (!a.queries.empty()) throw InputError(a.queries + ": (file): --queries is for the mms planner");
+  OmplSettings s;
+  s.planner = a.planner;
+  s.seed = a.seed;
+  s.resolution = a.resolution;
+  s.range = a.range;
+  s.neighbours = a.neighbours;
+  s.segmentFactor = a.segmentFactor;
+  s.simplify = a.simplify;
+  const OmplResult r = planWithOmpl(scene, s, Termination(a.timeLimit));
+  const char* status = r.status == OmplResult::Status::Found ? "found"
+                       : r.status == OmplResult::Status::Uncertified ? "uncertified" : "not_found";
+  nlohmann::json j = runSummary(a, status, r.seconds);
+  j["graph_states"] = r.states;
+  j["parameters"] = {{"resolution", s.resolution}, {"range", s.range}, {"k", s.neighbours},
+                     {"segment_factor", s.segmentFactor}, {"simplify", s.simplify}};
+  if (r.status == OmplResult::Status::Uncertified) {
+    std::printf("%s: %s returned a path in %.3f s that fails the continuous check: segment %zu at s = %.4g: %s "
+                "(counted as a failure)\n",
+                a.scene.c_str(), a.planner.c_str(), r.seconds, r.certificate.segment, r.certificate.parameter,
+                r.certificate.reason.c_str());
+    j["rejection"] = r.certificate.reason;
+    writeStats(a, j);
+    return 1;
+  }
+  if (r.status == OmplResult::Status::NotFound) {
+    std::printf("%s: %s found no path within %.3g s (%zu states)\n", a.scene.c_str(), a.planner.c_str(), a.timeLimit,
+                r.states);
+    writeStats(a, j);
+    return 1;
+  }
+  Path path;
+  path.waypoints = r.waypoints;
+  path.extra = {{"planner", a.planner}, {"seed", a.seed}, {"statistics", {{"graph_states", r.states}}}};
+  if (!a.output.empty()) savePath(path, scene, a.output);
+  if (!a.svg.empty()) writeFileAtomically(a.svg, renderSvg(scene, &path));
+  addPath(j, r.certificate, path.waypoints.size());
+  writeStats(a, j);
+  std::printf("%s: %s found a path in %.3f s, certified: %zu waypoints, translation %.4g, rotation %.4g rad, min "
+              "clearance %.3g; %zu states\n",
+              a.scene.c_str(), a.planner.c_str(), r.seconds, path.waypoints.size(), r.certificate.translation,
+              r.certificate.rotation, r.certificate.minClearance, r.states);
+  return 0;
+}
+
 void printTwoRobotStats(const TwoRobotStats& s) {
   const SubspaceStats& m = s.manifolds;
   std::printf("  manifolds: %zu subspaces (%zu + %zu fixings), %zu slices (%zu cells), %zu lines (%zu arcs); "
@@ -100,6 +163,19 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
                  s.graphEdges);
   };
   const TwoRobotResult res = planner.solve(Termination(a.timeLimit), progress);
+  nlohmann::json j = runSummary(a, res.status == MmsResult::Status::Found ? "found" : "not_found", res.stats.totalSeconds);
+  const TwoRobotStats& ts = res.stats;
+  j["graph_nodes"] = ts.graphNodes;
+  j["graph_edges"] = ts.graphEdges;
+  j["parameters"] = {{"n_theta", settings.nTheta}, {"n_lines", settings.nLines}, {"n_fixings", settings.nFixings}};
+  j["manifolds"] = {{"subspaces", ts.subspaces}, {"slices", ts.manifolds.slices}, {"lines", ts.manifolds.lines},
+                    {"path_cells", ts.pathCells}};
+  j["phases"] = {{"base_slices", ts.baseSliceSeconds}, {"overlays", ts.manifolds.sliceSeconds},
+                 {"lines", ts.manifolds.lineSeconds}, {"connect", ts.manifolds.connectSeconds},
+                 {"cross", ts.crossSeconds}, {"search", ts.searchSeconds}, {"motion", ts.motionSeconds},
+                 {"certify", ts.certifySeconds}};
+  if (res.status == MmsResult::Status::Found) addPath(j, res.certificate, res.waypoints.size());
+  writeStats(a, j);
   if (res.status != MmsResult::Status::Found) {
     std::printf("%s: no path found within %.3g s (%s)\n", a.scene.c_str(), a.timeLimit,
                 res.status == MmsResult::Status::Cancelled ? "interrupted" : "time limit");
@@ -132,6 +208,7 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
 
 int plan(const PlanArgs& a) {
   const Scene scene = loadScene(a.scene);
+  if (a.planner != "mms") return planOmpl(a, scene);
   if (scene.robots.size() == 2) return planTwo(a, scene);
   if (scene.robots.size() != 1)
     throw InputError(a.scene + ": robots: " + std::to_string(scene.robots.size()) +
@@ -145,6 +222,7 @@ int plan(const PlanArgs& a) {
   if (a.nLines) settings.nLines = a.nLines;
   MmsPlanner planner(scene, 0, settings);
   int exitCode = 0;
+  nlohmann::json summaries = nlohmann::json::array();
   for (size_t qi = 0; qi < queries.size(); ++qi) {
     const Query& q = queries[qi];
     Scene queryScene = scene;
@@ -158,6 +236,16 @@ int plan(const PlanArgs& a) {
                    clock.seconds(), s.rounds, s.slices, s.lines, s.graphNodes, s.graphEdges);
     };
     const MmsResult res = planner.solve(q.start, q.goal, Termination(a.timeLimit), progress);
+    nlohmann::json j = runSummary(a, res.status == MmsResult::Status::Found ? "found" : "not_found", res.stats.totalSeconds);
+    const MmsStats& ms = res.stats;
+    j["graph_nodes"] = ms.graphNodes;
+    j["graph_edges"] = ms.graphEdges;
+    j["parameters"] = {{"n_theta", settings.nTheta}, {"n_lines", settings.nLines}};
+    j["manifolds"] = {{"slices", ms.slices}, {"lines", ms.lines}, {"path_cells", ms.pathCells}};
+    j["phases"] = {{"slices", ms.sliceSeconds}, {"lines", ms.lineSeconds}, {"connect", ms.connectSeconds},
+                   {"search", ms.searchSeconds}, {"motion", ms.motionSeconds}, {"certify", ms.certifySeconds}};
+    if (res.status == MmsResult::Status::Found) addPath(j, res.certificate, res.waypoints.size());
+    summaries.push_back(j);
     if (res.status != MmsResult::Status::Found) {
       std::printf("%s: no path found within %.3g s (%s)\n", label.c_str(), a.timeLimit,
                   res.status == MmsResult::Status::Cancelled ? "interrupted" : "time limit");
@@ -195,6 +283,7 @@ int plan(const PlanArgs& a) {
                 res.certificate.minClearance);
     printStats(st);
   }
+  writeStats(a, summaries.size() == 1 ? summaries[0] : summaries);
   return exitCode;
 }
 

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "Commands.h"
+#include "baselines/OmplPlanner.h"
 #include "scene/Errors.h"
 
 namespace {
@@ -81,6 +82,26 @@ int main(int argc, char** argv) {
                       "Two robots: fixings per robot in the first round (n_f), doubling each round (default 8)")
       ->check(CLI::Range(1, 1000000));
   planCmd->add_flag("-q,--quiet", pa.quiet, "No progress messages on stderr");
+  std::vector<std::string> plannerNames{"mms"};
+  for (const std::string& n : mms::omplPlannerNames()) plannerNames.push_back(n);
+  planCmd->add_option("--planner", pa.planner,
+                      "mms (default), or an OMPL baseline on the same collision checker: prm, obprm, uobprm, "
+                      "prm-bridge, prm-gaussian, rrt, rrtconnect, kpiece, bkpiece, lazyprm")
+      ->check(CLI::IsMember(plannerNames));
+  planCmd->add_option("--resolution", pa.resolution,
+                      "OMPL planners: motion-check resolution, a fraction of the state space's extent")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-7, 0.5));
+  planCmd->add_option("--range", pa.range, "OMPL tree planners and LazyPRM: maximum motion length (0: OMPL's default)")
+      ->check(CLI::Range(0.0, 1e9));
+  planCmd->add_option("--k", pa.neighbours, "OMPL PRM family: nearest neighbours per milestone (0: OMPL's default)")
+      ->check(CLI::Range(0u, 100000u));
+  planCmd->add_option("--segment-factor", pa.segmentFactor,
+                      "U-OB-PRM: segment length l in units of the resolution")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 1e6));
+  planCmd->add_flag("--simplify", pa.simplify, "OMPL planners: run OMPL's path simplifier on the solution");
+  planCmd->add_option("--stats-json", pa.statsJson, "Write a JSON summary of the run (status, times, sizes) here");
   planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
                     "In the SVG, also draw the lines' points and the free-space cells of the slices the path uses");
   planCmd->add_option("--queries", pa.queries,

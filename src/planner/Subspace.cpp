@@ -78,11 +78,13 @@ size_t Subspace::addLine(Vec2 p) {
 }
 
 long Subspace::sliceNodeAt(size_t k, Vec2 p) const {
+  if (k >= slices_.size()) return -1;  // a subspace cut short by the time limit
   const int f = slices_[k].locate(p);
   return f < 0 ? -1 : long(sliceNodes_[k][f]);
 }
 
 long Subspace::lineNodeAt(size_t l, double theta) const {
+  if (l >= lines_.size()) return -1;
   const int a = lines_[l].arcContaining(theta);
   return a < 0 ? -1 : long(lineNodes_[l][a]);
 }

@@ -37,7 +37,7 @@ class Subspace {
   /// Adds a line at p, connecting it to the slices already here. Returns its index.
   size_t addLine(Vec2 p);
 
-  /// Graph node of the cell of slice k containing p, or -1.
+  /// Graph node of the cell of slice k containing p, or -1 (also when slice k was never built).
   long sliceNodeAt(size_t k, Vec2 p) const;
   /// Graph node of the arc of line l containing theta, or -1.
   long lineNodeAt(size_t l, double theta) const;

@@ -1,0 +1,243 @@
+#include "baselines/OmplPlanner.h"
+
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/samplers/BridgeTestValidStateSampler.h>
+#include <ompl/base/samplers/GaussianValidStateSampler.h>
+#include <ompl/base/samplers/ObstacleBasedValidStateSampler.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/geometric/PathSimplifier.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/geometric/planners/kpiece/BKPIECE1.h>
+#include <ompl/geometric/planners/kpiece/KPIECE1.h>
+#include <ompl/geometric/planners/prm/LazyPRM.h>
+#include <ompl/geometric/planners/prm/PRM.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <cmath>
+
+#include "baselines/UobprmSampler.h"
+
+namespace mms {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+const std::vector<std::string>& omplPlannerNames() {
+  static const std::vector<std::string> names{"prm",        "obprm",    "uobprm", "prm-bridge", "prm-gaussian",
+                                              "rrt",        "rrtconnect", "kpiece", "bkpiece",  "lazyprm"};
+  return names;
+}
+
+namespace {
+
+// State <-> configuration: robot i is component i (SE(2), or R^2 keeping its start angle).
+struct Layout {
+  const Scene& scene;
+  void toConfig(const ob::State* s, Config& q) const {
+    const auto* c = s->as<ob::CompoundState>();
+    q.resize(scene.dof());
+    for (size_t i = 0; i < scene.robots.size(); ++i) {
+      if (scene.robots[i].motion == Motion::Translate) {
+        const auto* r = c->as<ob::RealVectorStateSpace::StateType>(i);
+        q[3 * i] = r->values[0];
+        q[3 * i + 1] = r->values[1];
+        q[3 * i + 2] = scene.robots[i].start.theta;
+      } else {
+        const auto* r = c->as<ob::SE2StateSpace::StateType>(i);
+        q[3 * i] = r->getX();
+        q[3 * i + 1] = r->getY();
+        q[3 * i + 2] = r->getYaw();
+      }
+    }
+  }
+  void fromConfig(const Config& q, ob::State* s) const {
+    auto* c = s->as<ob::CompoundState>();
+    for (size_t i = 0; i < scene.robots.size(); ++i) {
+      if (scene.robots[i].motion == Motion::Translate) {
+        auto* r = c->as<ob::RealVectorStateSpace::StateType>(i);
+        r->values[0] = q[3 * i];
+        r->values[1] = q[3 * i + 1];
+      } else {
+        auto* r = c->as<ob::SE2StateSpace::StateType>(i);
+        r->setXY(q[3 * i], q[3 * i + 1]);
+        r->setYaw(std::remainder(q[3 * i + 2], 2 * M_PI));  // OMPL's SO(2) is [-pi, pi)
+        if (r->getYaw() >= M_PI) r->setYaw(-M_PI);
+      }
+    }
+  }
+};
+
+class Validity : public ob::StateValidityChecker {
+ public:
+  Validity(const ob::SpaceInformationPtr& si, const Layout& layout, const CollisionChecker& checker)
+      : ob::StateValidityChecker(si), layout_(layout), checker_(checker) {}
+  bool isValid(const ob::State* s) const override {
+    thread_local Config q;
+    layout_.toConfig(s, q);
+    return checker_.isFree(q);
+  }
+
+ private:
+  const Layout& layout_;
+  const CollisionChecker& checker_;
+};
+
+// KPIECE needs a projection: the robots' reference points (2-D for one robot, 4-D for two),
+// with cells a twentieth of the bounds.
+class PositionsProjection : public ob::ProjectionEvaluator {
+ public:
+  PositionsProjection(const ob::StateSpace* space, const Scene& scene)
+      : ob::ProjectionEvaluator(space), layout_{scene}, bounds_(scene.bounds), robots_(scene.robots.size()) {}
+  unsigned int getDimension() const override { return unsigned(2 * robots_); }
+  void defaultCellSizes() override {
+    cellSizes_.clear();
+    for (size_t i = 0; i < robots_; ++i) {
+      cellSizes_.push_back(bounds_.width() / 20);
+      cellSizes_.push_back(bounds_.height() / 20);
+    }
+  }
+  void project(const ob::State* state, Eigen::Ref<Eigen::VectorXd> out) const override {
+    thread_local Config q;
+    layout_.toConfig(state, q);
+    for (size_t i = 0; i < robots_; ++i) {
+      out[2 * i] = q[3 * i];
+      out[2 * i + 1] = q[3 * i + 1];
+    }
+  }
+
+ private:
+  Layout layout_;
+  Box bounds_;
+  size_t robots_;
+};
+
+ob::StateSpacePtr makeSpace(const Scene& scene) {
+  auto space = std::make_shared<ob::CompoundStateSpace>();
+  ob::RealVectorBounds b(2);
+  b.setLow(0, scene.bounds.xmin);
+  b.setHigh(0, scene.bounds.xmax);
+  b.setLow(1, scene.bounds.ymin);
+  b.setHigh(1, scene.bounds.ymax);
+  for (const Robot& r : scene.robots) {
+    if (r.motion == Motion::Translate) {
+      auto rv = std::make_shared<ob::RealVectorStateSpace>(2);
+      rv->setBounds(b);
+      space->addSubspace(rv, 1.0);
+    } else {
+      auto se2 = std::make_shared<ob::SE2StateSpace>();
+      se2->setBounds(b);
+      space->addSubspace(se2, 1.0);
+    }
+  }
+  space->registerDefaultProjection(std::make_shared<PositionsProjection>(space.get(), scene));
+  return space;
+}
+
+ob::PlannerPtr makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings& s, double extent) {
+  const std::string& n = s.planner;
+  auto prm = [&] {
+    auto p = std::make_shared<og::PRM>(si);
+    if (s.neighbours) p->setMaxNearestNeighbors(s.neighbours);
+    return p;
+  };
+  auto withSampler = [&](ob::ValidStateSamplerAllocator alloc) {
+    si->setValidStateSamplerAllocator(std::move(alloc));
+    return prm();
+  };
+  if (n == "prm") return prm();
+  if (n == "obprm")
+    return withSampler([](const ob::SpaceInformation* i) { return std::make_shared<ob::ObstacleBasedValidStateSampler>(i); });
+  if (n == "prm-bridge")
+    return withSampler([](const ob::SpaceInformation* i) { return std::make_shared<ob::BridgeTestValidStateSampler>(i); });
+  if (n == "prm-gaussian")
+    return withSampler([](const ob::SpaceInformation* i) { return std::make_shared<ob::GaussianValidStateSampler>(i); });
+  if (n == "uobprm") {
+    const double length = s.segmentFactor * s.resolution * extent;
+    const double step = s.resolution * extent;
+    return withSampler([length, step](const ob::SpaceInformation* i) {
+      return std::make_shared<UobprmSampler>(i, length, step);
+    });
+  }
+  if (n == "rrt") {
+    auto p = std::make_shared<og::RRT>(si);
+    if (s.range > 0) p->setRange(s.range);
+    return p;
+  }
+  if (n == "rrtconnect") {
+    auto p = std::make_shared<og::RRTConnect>(si);
+    if (s.range > 0) p->setRange(s.range);
+    return p;
+  }
+  if (n == "kpiece") {
+    auto p = std::make_shared<og::KPIECE1>(si);
+    if (s.range > 0) p->setRange(s.range);
+    return p;
+  }
+  if (n == "bkpiece") {
+    auto p = std::make_shared<og::BKPIECE1>(si);
+    if (s.range > 0) p->setRange(s.range);
+    return p;
+  }
+  if (n == "lazyprm") {
+    auto p = std::make_shared<og::LazyPRM>(si);
+    if (s.range > 0) p->setRange(s.range);
+    return p;
+  }
+  throw std::invalid_argument("unknown planner '" + n + "'");
+}
+
+}  // namespace
+
+OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop) {
+  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ompl::RNG::setSeed(settings.seed);
+  const CollisionChecker checker(scene);
+  const Layout layout{scene};
+  og::SimpleSetup setup(makeSpace(scene));
+  const ob::SpaceInformationPtr si = setup.getSpaceInformation();
+  setup.setStateValidityChecker(std::make_shared<Validity>(si, layout, checker));
+  si->setStateValidityCheckingResolution(settings.resolution);
+  const double extent = si->getMaximumExtent();
+  setup.setPlanner(makePlanner(si, settings, extent));
+
+  ob::ScopedState<> start(setup.getStateSpace()), goal(setup.getStateSpace());
+  layout.fromConfig(startConfig(scene), start.get());
+  layout.fromConfig(goalConfig(scene), goal.get());
+  setup.setStartAndGoalStates(start, goal);
+  setup.setup();
+
+  OmplResult r;
+  Stopwatch watch;
+  const ob::PlannerStatus status = setup.solve(ob::PlannerTerminationCondition([&] { return stop(); }));
+  r.seconds = watch.seconds();
+  ob::PlannerData data(si);
+  setup.getPlanner()->getPlannerData(data);
+  r.states = data.numVertices();
+  if (status != ob::PlannerStatus::EXACT_SOLUTION) return r;
+  if (settings.simplify) setup.simplifySolution();
+
+  // OMPL interpolates SO(2) the short way; unwrapping the angles says the same in mms-path/1.
+  og::PathGeometric& path = setup.getSolutionPath();
+  Config q;
+  for (size_t k = 0; k < path.getStateCount(); ++k) {
+    layout.toConfig(path.getState(k), q);
+    if (!r.waypoints.empty())
+      for (size_t i = 0; i < scene.robots.size(); ++i) {
+        const double prev = r.waypoints.back()[3 * i + 2];
+        q[3 * i + 2] = prev + std::remainder(q[3 * i + 2] - prev, 2 * M_PI);
+      }
+    r.waypoints.push_back(q);
+  }
+  Path p;
+  p.waypoints = r.waypoints;
+  r.certificate = checkPath(scene, checker, p);
+  r.status = r.certificate.ok ? OmplResult::Status::Found : OmplResult::Status::Uncertified;
+  if (!r.certificate.ok) r.waypoints.clear();
+  return r;
+}
+
+}  // namespace mms

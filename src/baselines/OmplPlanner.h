@@ -1,0 +1,41 @@
+#pragma once
+// OMPL's sampling-based planners on mms scenes, with mms's own collision checker as the state
+// validity checker (one definition of free space for every planner) and OMPL's discrete motion
+// validator at resolution `resolution`. Returned paths are only resolution-checked by OMPL;
+// mms runs each through its continuous path checker, and a path that fails counts as a failure.
+#include <string>
+#include <vector>
+
+#include "check/PathChecker.h"
+#include "util/Termination.h"
+
+namespace mms {
+
+/// The planner names `mms plan --planner` accepts besides "mms".
+const std::vector<std::string>& omplPlannerNames();
+
+struct OmplSettings {
+  std::string planner = "rrtconnect";
+  uint64_t seed = 1;
+  /// Motion-check resolution as a fraction of the state space's extent (OMPL's
+  /// setStateValidityCheckingResolution).
+  double resolution = 0.002;
+  double range = 0;             // RRT, RRT-Connect, KPIECE1, BKPIECE1, LazyPRM: 0 = OMPL's default
+  unsigned neighbours = 0;      // PRM family: k nearest neighbours; 0 = OMPL's default
+  double segmentFactor = 10;    // U-OB-PRM: segment length l = factor x resolution x extent
+  bool simplify = false;        // OMPL's path simplifier on the returned path
+};
+
+struct OmplResult {
+  enum class Status { Found, NotFound, Uncertified } status = Status::NotFound;
+  std::vector<Config> waypoints;  // certified when Found
+  PathCheckResult certificate;    // why an OMPL path was refused, when Uncertified
+  double seconds = 0;             // planning time (OMPL's solve)
+  size_t states = 0;              // vertices of the planner's graph or tree
+};
+
+/// Plans all robots of the scene jointly (SE(2) per rigid robot, R^2 per translating one).
+/// Seeds OMPL's global RNG: call once per process for reproducible runs.
+OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop);
+
+}  // namespace mms

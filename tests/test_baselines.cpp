@@ -1,0 +1,119 @@
+// OMPL baselines on mms scenes: same checker, every reported path certified.
+#include <gtest/gtest.h>
+
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
+
+#include "Support.h"
+#include "baselines/OmplPlanner.h"
+#include "baselines/UobprmSampler.h"
+#include "scene/SceneIO.h"
+
+using namespace mms;
+using namespace mms::test;
+
+TEST(Ompl, EveryPlannerRunsAndOnlyCertifiedPathsAreFound) {
+  const Scene s = loadScene(scenario("one-robot/bar-slot.json"));
+  const CollisionChecker checker(s);
+  int found = 0;
+  for (const std::string& name : omplPlannerNames()) {
+    OmplSettings st;
+    st.planner = name;
+    st.seed = 1;
+    const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(2.0)));
+    EXPECT_GT(r.states, 0u) << name;
+    EXPECT_LT(r.seconds, planSeconds(2.0) + 1.0) << name;  // the termination condition is honoured
+    if (r.status == OmplResult::Status::Found) {
+      ++found;
+      Path p;
+      p.waypoints = r.waypoints;
+      EXPECT_TRUE(checkPath(s, checker, p).ok) << name;
+    } else {
+      EXPECT_TRUE(r.waypoints.empty()) << name;
+    }
+  }
+  EXPECT_GE(found, 3);
+}
+
+TEST(Ompl, CoarseResolutionPathsAreCheckedNotTrusted) {
+  // At a coarse motion-check resolution OMPL's paths cut corners; mms must refuse them rather
+  // than report them. Whatever is reported as found certifies.
+  const Scene s = loadScene(scenario("one-robot/bar-slot.json"));
+  const CollisionChecker checker(s);
+  int uncertified = 0;
+  for (uint64_t seed = 1; seed <= 8; ++seed) {
+    OmplSettings st;
+    st.planner = "prm";
+    st.seed = seed;
+    st.resolution = 0.2;
+    const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(2.0)));
+    if (r.status == OmplResult::Status::Uncertified) {
+      ++uncertified;
+      EXPECT_FALSE(r.certificate.ok);
+      EXPECT_NE(r.certificate.reason.find("hits"), std::string::npos) << r.certificate.reason;
+    }
+    if (r.status == OmplResult::Status::Found) {
+      Path p;
+      p.waypoints = r.waypoints;
+      EXPECT_TRUE(checkPath(s, checker, p).ok);
+    }
+  }
+  EXPECT_GT(uncertified, 0);
+}
+
+TEST(Ompl, TwoRobotsAndTranslatingPartsUseTheirOwnSpaces) {
+  for (const char* f : {"two-robots/niche-swap.json", "translating/cup.json"}) {
+    const Scene s = loadScene(scenario(f));
+    OmplSettings st;
+    st.planner = "prm-bridge";
+    st.resolution = 0.0005;  // fine enough that the resolution-checked path also certifies
+    const OmplResult r = planWithOmpl(s, st, Termination(20.0));
+    ASSERT_EQ(r.status, OmplResult::Status::Found) << f << ": " << r.certificate.reason;
+    for (const Config& q : r.waypoints)
+      for (size_t i = 0; i < s.robots.size(); ++i)
+        if (s.robots[i].motion == Motion::Translate) {
+          EXPECT_EQ(q[3 * i + 2], s.robots[i].start.theta);
+        }
+  }
+}
+
+TEST(Uobprm, SamplesAreValidAndMostlyNearObstacles) {
+  const Scene s = loadScene(scenario("one-robot/bar-slot.json"));
+  const CollisionChecker checker(s);
+  auto space = std::make_shared<ompl::base::SE2StateSpace>();
+  ompl::base::RealVectorBounds b(2);
+  b.setLow(-10);
+  b.setHigh(10);
+  space->setBounds(b);
+  auto si = std::make_shared<ompl::base::SpaceInformation>(space);
+  si->setStateValidityChecker([&](const ompl::base::State* st) {
+    const auto* se2 = st->as<ompl::base::SE2StateSpace::StateType>();
+    return checker.isFree({se2->getX(), se2->getY(), se2->getYaw()});
+  });
+  si->setup();
+  UobprmSampler sampler(si.get(), 0.5, 0.05);
+  ompl::base::State* st = si->allocState();
+  int near = 0, n = 0;
+  for (int i = 0; i < 400; ++i) {
+    if (!sampler.sample(st)) continue;
+    ++n;
+    ASSERT_TRUE(si->isValid(st));
+    const auto* se2 = st->as<ompl::base::SE2StateSpace::StateType>();
+    near += checker.robotClearance(0, {se2->getX(), se2->getY(), se2->getYaw()}).distance < 0.5;
+  }
+  si->freeState(st);
+  EXPECT_GT(n, 300);
+  EXPECT_GT(near, n / 4);  // the segment half lands next to obstacles
+}
+
+TEST(Ompl, PlanCommandWithABaseline) {
+  TempDir dir;
+  const std::string scene = quote(scenario("one-robot/bar-slot.json"));
+  const Outcome r = runMms("plan " + scene + " --planner prm-bridge --time-limit 20 -o " + quote(dir.path("p.json")) +
+                           " --stats-json " + quote(dir.path("s.json")));
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_EQ(runMms("check " + scene + " " + quote(dir.path("p.json"))).code, 0);
+  EXPECT_NE(readFile(dir.path("s.json")).find("\"status\": \"found\""), std::string::npos);
+  const Outcome bad = runMms("plan " + scene + " --planner astar");
+  EXPECT_EQ(bad.code, 2);
+}
