@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   libgtest-dev googletest libbenchmark-dev
   librsvg2-bin
+  ompl-demos
 )
 
 missing=()

@@ -2,6 +2,7 @@
 // One function per CLI command. Each returns the process exit code: 0 success, 1 the
 // answer is "no" (path rejected, no path found), 2 bad input (InputError propagates).
 #include <string>
+#include <vector>
 
 namespace mms::cli {
 
@@ -55,5 +56,20 @@ struct ScenarioArgs {
   uint64_t seed = 1;
 };
 int scenario(const ScenarioArgs& a);
+
+}  // namespace mms::cli
+
+namespace mms::cli {
+
+struct BenchArgs {
+  std::vector<std::string> scenes, planners, params;
+  std::string output, sweepPacman;
+  uint64_t runs = 12;
+  double timeLimit = 60, memoryMb = 4096;
+  size_t shardIndex = 1, shardCount = 1, jobs = 1;
+  bool reportOnly = false;
+};
+int bench(const BenchArgs& a);
+int benchMerge(const std::vector<std::string>& dirs, const std::string& output);
 
 }  // namespace mms::cli

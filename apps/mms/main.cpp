@@ -2,6 +2,8 @@
 // rejected, no path), 2 bad input or usage, 3 internal error.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cstdio>
 #include <iostream>
 
 #include "Commands.h"
@@ -9,6 +11,21 @@
 #include "scene/Errors.h"
 
 namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : s) {
+    if (c == sep) {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
 
 std::string oneLine(std::string s) {
   for (char& c : s)
@@ -123,6 +140,45 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 0.999));
   scenarioCmd->add_option("--seed", sa.seed, "random-polygons: the seed of the geometry")->capture_default_str();
 
+  BenchArgs ba;
+  std::string plannersList = "mms,prm,obprm,uobprm,prm-bridge,prm-gaussian,rrt,rrtconnect,kpiece,bkpiece,lazyprm";
+  std::string shard = "1/1";
+  auto* benchCmd = app.add_subcommand(
+      "bench",
+      "Run planners on scenes, N seeds each, every run in its own process under a time and memory limit.\n"
+      "Writes DIR/runs.jsonl as runs finish (rerun to resume), then DIR/report.md (Markdown table),\n"
+      "DIR/results.csv, DIR/ompl/*.log (for ompl_benchmark_statistics / Planner Arena) and, with a\n"
+      "sweep, DIR/tightness.svg");
+  benchCmd->add_option("SCENES", ba.scenes, "Scene files")->check(CLI::ExistingFile);
+  benchCmd->add_option("-o,--output", ba.output, "Results folder")->required();
+  benchCmd->add_option("--planners", plannersList, "Comma-separated planners (mms and OMPL names)")
+      ->capture_default_str();
+  benchCmd->add_option("--runs", ba.runs, "Runs per scene and planner (seeds 1..N)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")->capture_default_str()->check(CLI::Range(0.01, 1e6));
+  benchCmd->add_option("--memory-limit", ba.memoryMb, "MB of address space per run")
+      ->capture_default_str()
+      ->check(CLI::Range(64.0, 1e7));
+  benchCmd->add_option("--sweep-pacman", ba.sweepPacman,
+                       "Comma-separated Pacman tightness values to add as generated scenes, e.g. 0,0.5,0.9");
+  benchCmd->add_option("--param", ba.params,
+                       "Extra mms plan options for one planner, e.g. --param \"prm=--k 10\" (repeatable)");
+  benchCmd->add_option("--shard", shard,
+                       "K/N: run only the K-th of N disjoint parts of the run list (merge with mms bench-merge)")
+      ->capture_default_str();
+  benchCmd->add_option("--jobs", ba.jobs, "Runs at a time (timings are noisier above 1)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  benchCmd->add_flag("--report-only", ba.reportOnly, "Only rewrite the reports from the runs recorded in DIR");
+
+  std::vector<std::string> mergeDirs;
+  std::string mergeOut;
+  auto* mergeCmd = app.add_subcommand("bench-merge", "Merge the runs of several mms bench folders (shards) into one, "
+                                                     "with reports");
+  mergeCmd->add_option("DIRS", mergeDirs, "Benchmark folders")->required();
+  mergeCmd->add_option("-o,--output", mergeOut, "Merged folder")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -142,6 +198,23 @@ int main(int argc, char** argv) {
     if (*renderCmd) return render(ra);
     if (*planCmd) return plan(pa);
     if (*scenarioCmd) return scenario(sa);
+    if (*benchCmd) {
+      ba.planners.clear();
+      for (const std::string& p : split(plannersList, ',')) {
+        if (std::find(plannerNames.begin(), plannerNames.end(), p) == plannerNames.end())
+          throw mms::InputError("--planners: unknown planner '" + p + "'");
+        ba.planners.push_back(p);
+      }
+      if (ba.planners.empty()) throw mms::InputError("--planners: no planner given");
+      unsigned k = 0, n = 0;
+      char extra = 0;
+      if (std::sscanf(shard.c_str(), "%u/%u%c", &k, &n, &extra) != 2 || n == 0 || k == 0 || k > n)
+        throw mms::InputError("--shard: expected K/N with 1 <= K <= N, found '" + shard + "'");
+      ba.shardIndex = k;
+      ba.shardCount = n;
+      return bench(ba);
+    }
+    if (*mergeCmd) return benchMerge(mergeDirs, mergeOut);
   } catch (const mms::InputError& e) {
     std::cerr << oneLine(e.what()) << "\n";
     return 2;

@@ -1,0 +1,300 @@
+// mms bench: planners x scenes x seeds, each run in its own process under a time and a memory
+// limit, results appended to runs.jsonl as they come (an interrupted benchmark keeps its data
+// and resumes), reports made from all runs of a folder.
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "Commands.h"
+#include "bench/Report.h"
+#include "scene/Errors.h"
+#include "scene/Generators.h"
+#include "scene/Json.h"
+#include "scene/SceneIO.h"
+#include "util/AtomicFile.h"
+
+namespace fs = std::filesystem;
+
+namespace mms::cli {
+
+namespace {
+
+std::atomic<bool> interrupted{false};
+void onSigint(int) { interrupted = true; }
+
+struct Job {
+  RunRecord record;
+  std::vector<std::string> args;  // mms plan ...
+};
+
+std::string selfExe() {
+  std::error_code ec;
+  const fs::path p = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw std::runtime_error("cannot find the mms executable: " + ec.message());
+  return p.string();
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  for (std::string item; std::getline(ss, item, sep);)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+std::string key(const RunRecord& r) {
+  return r.scene + "|" + r.planner + "|" + r.parameters + "|" + std::to_string(r.seed);
+}
+
+// Starts `mms plan` for a job; the child gets the memory limit and no terminal output.
+pid_t start(const std::string& exe, const Job& job, double memoryMb) {
+  const pid_t pid = fork();
+  if (pid != 0) return pid;
+  const rlim_t bytes = rlim_t(memoryMb * 1024 * 1024);
+  const struct rlimit lim{bytes, bytes};
+  setrlimit(RLIMIT_AS, &lim);
+  const int null = open("/dev/null", O_WRONLY);
+  dup2(null, 1);
+  dup2(null, 2);
+  std::vector<char*> argv{const_cast<char*>(exe.c_str())};
+  for (const std::string& a : job.args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  execv(exe.c_str(), argv.data());
+  _exit(127);
+}
+
+void fillFromStats(RunRecord& r, const std::string& statsFile) {
+  std::ifstream in(statsFile);
+  if (!in) return;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    r.status = j.value("status", r.status);
+    r.seconds = j.value("seconds", r.seconds);
+    if (j.contains("path")) {
+      r.translation = j["path"].value("translation", 0.0);
+      r.rotation = j["path"].value("rotation", 0.0);
+    }
+    r.graphSize = j.value("graph_nodes", j.value("graph_states", size_t(0)));
+    r.detail = j.value("rejection", "");
+  } catch (const std::exception&) {
+    r.detail = "unreadable statistics";
+  }
+}
+
+void writeReports(const std::string& dir) {
+  std::vector<RunRecord> runs;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("runs", 0) == 0 && e.path().extension() == ".jsonl") {
+      for (RunRecord& r : readRuns(e.path().string())) runs.push_back(std::move(r));
+    }
+  }
+  // Shards may overlap after a merge; keep the first record of each run.
+  std::set<std::string> seen;
+  std::vector<RunRecord> unique;
+  for (RunRecord& r : runs)
+    if (seen.insert(key(r)).second) unique.push_back(std::move(r));
+  const std::vector<Summary> summaries = summarize(unique);
+  std::vector<Summary> swept, fixed;
+  for (const Summary& s : summaries) (s.tightness >= 0 ? swept : fixed).push_back(s);
+  std::string md = "# mms bench results\n\n" + std::to_string(unique.size()) +
+                   " runs. Times are planning times as each planner measures them; mean and stdev over solved runs "
+                   "without the fastest and the slowest, median over all runs (an unsolved run counts as infinite).\n\n";
+  md += markdownReport(fixed, "");
+  if (!swept.empty()) {
+    md += "\n## Tightness sweep\n\n" + markdownReport(swept, "") + "\n![time vs tightness](tightness.svg)\n";
+    writeFileAtomically(dir + "/tightness.svg", tightnessPlot(swept, "Pacman: planning time vs tightness"));
+  }
+  writeFileAtomically(dir + "/report.md", md);
+  writeFileAtomically(dir + "/results.csv", csvReport(unique));
+  fs::create_directories(dir + "/ompl");
+  char host[256] = "unknown";
+  gethostname(host, sizeof host - 1);
+  for (const auto& [scene, log] : omplLogs(unique, host)) writeFileAtomically(dir + "/ompl/" + scene + ".log", log);
+}
+
+}  // namespace
+
+int bench(const BenchArgs& a) {
+  fs::create_directories(a.output);
+  if (a.reportOnly) {
+    writeReports(a.output);
+    std::printf("%s: reports written\n", a.output.c_str());
+    return 0;
+  }
+  // Scenes: the files given, plus generated Pacman scenes for a tightness sweep.
+  struct SceneEntry {
+    std::string file, name;
+    double tightness;
+  };
+  std::vector<SceneEntry> scenes;
+  for (const std::string& f : a.scenes) scenes.push_back({f, loadScene(f).name, -1});
+  if (!a.sweepPacman.empty()) {
+    fs::create_directories(a.output + "/scenes");
+    for (const std::string& t : split(a.sweepPacman, ',')) {
+      double tight;
+      try {
+        tight = std::stod(t);
+      } catch (const std::exception&) {
+        throw InputError("--sweep-pacman: '" + t + "' is not a number");
+      }
+      if (!(tight >= 0 && tight < 1)) throw InputError("--sweep-pacman: tightness " + t + " is not in [0, 1)");
+      const Scene s = pacmanScene(tight);
+      const std::string file = a.output + "/scenes/" + s.name + ".json";
+      saveScene(s, file);
+      scenes.push_back({file, s.name, tight});
+    }
+  }
+  for (SceneEntry& s : scenes)
+    if (s.name.empty()) s.name = fs::path(s.file).stem().string();
+  if (scenes.empty()) throw InputError("mms bench: no scenes (give scene files or --sweep-pacman)");
+
+  std::map<std::string, std::string> params;  // planner -> extra mms plan arguments
+  for (const std::string& p : a.params) {
+    const size_t eq = p.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError("--param: expected PLANNER=ARGS, found '" + p + "'");
+    params[p.substr(0, eq)] = p.substr(eq + 1);
+  }
+
+  std::vector<Job> jobs;
+  size_t index = 0;
+  for (const SceneEntry& s : scenes)
+    for (const std::string& planner : a.planners)
+      for (uint64_t seed = 1; seed <= a.runs; ++seed, ++index) {
+        if (index % a.shardCount != a.shardIndex - 1) continue;
+        Job j;
+        j.record.scene = s.name;
+        j.record.sceneFile = s.file;
+        j.record.tightness = s.tightness;
+        j.record.planner = planner;
+        j.record.parameters = params.count(planner) ? params[planner] : "";
+        j.record.seed = seed;
+        j.record.timeLimit = a.timeLimit;
+        j.record.memoryLimitMb = a.memoryMb;
+        j.args = {"plan", s.file, "--planner", planner, "--seed", std::to_string(seed), "--time-limit",
+                  std::to_string(a.timeLimit), "-q"};
+        for (const std::string& extra : split(j.record.parameters, ' ')) j.args.push_back(extra);
+        jobs.push_back(std::move(j));
+      }
+
+  const std::string runsFile = a.output + "/" +
+                               (a.shardCount > 1 ? "runs-" + std::to_string(a.shardIndex) + "-of-" +
+                                                       std::to_string(a.shardCount) + ".jsonl"
+                                                 : "runs.jsonl");
+  std::set<std::string> done;
+  if (fs::exists(runsFile))
+    for (const RunRecord& r : readRuns(runsFile)) done.insert(key(r));
+  std::ofstream out(runsFile, std::ios::app);
+  if (!out) throw InputError(runsFile + ": (output): cannot open for appending");
+
+  const std::string exe = selfExe();
+  const std::string tmp = a.output + "/tmp";
+  fs::create_directories(tmp);
+  signal(SIGINT, onSigint);
+  struct Running {
+    Job job;
+    pid_t pid;
+    std::chrono::steady_clock::time_point started;
+    std::string stats;
+  };
+  std::vector<Running> running;
+  size_t next = 0, finished = 0, skipped = 0;
+  const size_t total = jobs.size();
+  const double grace = std::max(5.0, 0.2 * a.timeLimit);
+  while ((next < jobs.size() || !running.empty()) && !interrupted) {
+    while (next < jobs.size() && running.size() < a.jobs) {
+      Job job = jobs[next++];
+      if (done.count(key(job.record))) {
+        ++skipped;
+        continue;
+      }
+      Running r{job, 0, std::chrono::steady_clock::now(), tmp + "/run-" + std::to_string(next) + ".json"};
+      fs::remove(r.stats);
+      r.job.args.push_back("--stats-json");
+      r.job.args.push_back(r.stats);
+      r.pid = start(exe, r.job, a.memoryMb);
+      running.push_back(std::move(r));
+    }
+    if (running.empty()) break;
+    bool reaped = false;
+    for (size_t i = 0; i < running.size(); ++i) {
+      Running& r = running[i];
+      int status = 0;
+      struct rusage usage {};
+      const pid_t got = wait4(r.pid, &status, WNOHANG, &usage);
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.started).count();
+      if (got == 0 && elapsed > a.timeLimit + grace) {
+        kill(r.pid, SIGKILL);
+        continue;  // reaped on a later pass
+      }
+      if (got != r.pid) continue;
+      RunRecord rec = r.job.record;
+      rec.wallSeconds = elapsed;
+      rec.peakMemoryMb = usage.ru_maxrss / 1024.0;
+      rec.status = "crashed";
+      if (WIFSIGNALED(status)) rec.detail = WTERMSIG(status) == SIGKILL ? "killed after the time limit" : "signal " + std::to_string(WTERMSIG(status));
+      if (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) rec.status = "killed";
+      if (WIFEXITED(status)) {
+        fillFromStats(rec, r.stats);
+        if (WEXITSTATUS(status) == 3) rec.status = "crashed", rec.detail = "internal error or out of memory";
+      }
+      if (rec.status == "not_found" || rec.status == "killed" || rec.status == "crashed") rec.seconds = std::max(rec.seconds, 0.0);
+      out << rec.toJson().dump() << "\n" << std::flush;
+      ++finished;
+      std::fprintf(stderr, "mms bench: [%zu/%zu] %s %s seed %llu: %s %.3f s\n", finished + skipped, total,
+                   rec.scene.c_str(), rec.planner.c_str(), (unsigned long long)rec.seed, rec.status.c_str(),
+                   rec.seconds);
+      fs::remove(r.stats);
+      running.erase(running.begin() + long(i));
+      reaped = true;
+      break;
+    }
+    if (!reaped) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  if (interrupted) {
+    for (Running& r : running) kill(r.pid, SIGKILL);
+    for (Running& r : running) waitpid(r.pid, nullptr, 0);
+    std::fprintf(stderr, "mms bench: interrupted; %zu runs recorded in %s (run again to resume)\n", finished,
+                 runsFile.c_str());
+    return 130;
+  }
+  fs::remove_all(tmp);
+  writeReports(a.output);
+  std::printf("%s: %zu runs (%zu already recorded); report in %s/report.md\n", a.output.c_str(), finished, skipped,
+              a.output.c_str());
+  return 0;
+}
+
+int benchMerge(const std::vector<std::string>& dirs, const std::string& output) {
+  fs::create_directories(output);
+  std::set<std::string> seen;
+  std::string merged;
+  size_t n = 0;
+  for (const std::string& d : dirs) {
+    if (!fs::is_directory(d)) throw InputError(d + ": (file): not a benchmark folder");
+    for (const auto& e : fs::directory_iterator(d)) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind("runs", 0) != 0 || e.path().extension() != ".jsonl") continue;
+      for (const RunRecord& r : readRuns(e.path().string()))
+        if (seen.insert(key(r)).second) merged += r.toJson().dump() + "\n", ++n;
+    }
+  }
+  writeFileAtomically(output + "/runs.jsonl", merged);
+  writeReports(output);
+  std::printf("%s: merged %zu runs from %zu folders\n", output.c_str(), n, dirs.size());
+  return 0;
+}
+
+}  // namespace mms::cli

@@ -1,0 +1,55 @@
+#pragma once
+// Benchmark results: one record per run (a line of runs.jsonl), and the reports made from them:
+// a Markdown table in the style of the paper's Table 1, CSV, OMPL benchmark logs (readable by
+// ompl_benchmark_statistics and Planner Arena), and time-versus-tightness plots like its Fig. 5.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace mms {
+
+struct RunRecord {
+  std::string scene;       // scene name (from the file)
+  std::string sceneFile;
+  double tightness = -1;   // for swept scenes (Pacman), else -1
+  std::string planner;
+  std::string parameters;  // as given to mms plan, e.g. "--k 10"
+  uint64_t seed = 0;
+  std::string status;      // found, not_found, uncertified, crashed, killed
+  double seconds = 0;      // planning time as the planner measured it
+  double wallSeconds = 0;  // the whole process
+  double peakMemoryMb = 0;
+  double timeLimit = 0, memoryLimitMb = 0;
+  double translation = 0, rotation = 0;
+  size_t graphSize = 0;  // graph nodes (mms) or planner states (OMPL)
+  std::string detail;    // why a run failed, when known
+
+  bool solved() const { return status == "found"; }
+  nlohmann::json toJson() const;
+  static RunRecord fromJson(const nlohmann::json& j);
+};
+
+/// Statistics of one planner on one scene.
+struct Summary {
+  std::string scene, planner, parameters;
+  double tightness = -1, timeLimit = 0;
+  size_t runs = 0, solved = 0, uncertified = 0;
+  double meanTrimmed = 0, stdevTrimmed = 0;  // over solved runs, without the fastest and slowest (paper's protocol)
+  double median = 0;                         // over all runs, an unsolved run counting as infinite
+  bool medianSolved = false;
+  double medianLength = 0, medianGraph = 0, peakMemoryMb = 0;
+};
+
+std::vector<Summary> summarize(const std::vector<RunRecord>& runs);
+
+std::string markdownReport(const std::vector<Summary>& summaries, const std::string& heading);
+std::string csvReport(const std::vector<RunRecord>& runs);
+/// One OMPL benchmark log per scene: scene name -> log text.
+std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunRecord>& runs, const std::string& host);
+/// SVG plot of mean planning time (log scale) against tightness with one-stdev error bars per
+/// planner; unsolved runs are drawn as such at the top.
+std::string tightnessPlot(const std::vector<Summary>& summaries, const std::string& title);
+
+std::vector<RunRecord> readRuns(const std::string& jsonlFile);
+
+}  // namespace mms

@@ -1,0 +1,132 @@
+// mms bench: statistics, reports in the formats other tools read, runs recorded incrementally,
+// shards and merging, limits.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "Support.h"
+#include "bench/Report.h"
+
+using namespace mms;
+using namespace mms::test;
+
+namespace {
+
+RunRecord run(const std::string& planner, uint64_t seed, const std::string& status, double seconds) {
+  RunRecord r;
+  r.scene = "s";
+  r.planner = planner;
+  r.seed = seed;
+  r.status = status;
+  r.seconds = seconds;
+  r.timeLimit = 60;
+  r.translation = 10;
+  return r;
+}
+
+size_t lines(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
+
+}  // namespace
+
+TEST(BenchReport, TrimmedMeanMedianAndFailures) {
+  std::vector<RunRecord> runs;
+  const double times[] = {1, 2, 3, 4, 100};
+  for (uint64_t i = 0; i < 5; ++i) runs.push_back(run("a", i + 1, "found", times[i]));
+  runs.push_back(run("b", 1, "found", 5));
+  runs.push_back(run("b", 2, "not_found", 60));
+  runs.push_back(run("b", 3, "uncertified", 7));
+  const std::vector<Summary> s = summarize(runs);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_DOUBLE_EQ(s[0].meanTrimmed, 3.0);  // 2, 3, 4: without the fastest and the slowest
+  EXPECT_DOUBLE_EQ(s[0].stdevTrimmed, 1.0);
+  EXPECT_DOUBLE_EQ(s[0].median, 3.0);
+  EXPECT_EQ(s[1].solved, 1u);
+  EXPECT_EQ(s[1].uncertified, 1u);
+  EXPECT_FALSE(s[1].medianSolved);  // two of three unsolved: the median is a failure
+  const std::string md = markdownReport(s, "");
+  EXPECT_NE(md.find("| s | a | defaults | 5/5 | 3 ± 1 | 3 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("1/3 (1 uncertified)"), std::string::npos);
+  EXPECT_NE(md.find("> 60"), std::string::npos);
+  EXPECT_EQ(lines(csvReport(runs)), runs.size() + 1);
+}
+
+TEST(BenchReport, OmplLogIsReadByOmplBenchmarkStatistics) {
+  TempDir dir;
+  std::vector<RunRecord> runs;
+  for (uint64_t i = 1; i <= 3; ++i) runs.push_back(run("mms", i, "found", 0.1 * i));
+  runs.push_back(run("prm", 1, "not_found", 60));
+  const auto logs = omplLogs(runs, "host");
+  ASSERT_EQ(logs.size(), 1u);
+  const std::string log = dir.file("s.log", logs[0].second);
+  const Outcome r = runCommand("ompl_benchmark_statistics " + quote(log) + " -d " + quote(dir.path("b.db")));
+  ASSERT_EQ(r.code, 0) << "ompl_benchmark_statistics (Debian package ompl-demos, installed by scripts/setup.sh): "
+                       << r.out << r.err;
+  EXPECT_NE(r.out.find("Parsing data for mms"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Parsing data for prm"), std::string::npos);
+}
+
+TEST(BenchReport, TightnessPlotRenders) {
+  std::vector<RunRecord> runs;
+  for (double t : {0.0, 0.5, 0.9})
+    for (uint64_t i = 1; i <= 3; ++i) {
+      RunRecord r = run("mms", i, "found", 1 + t + 0.1 * i);
+      r.scene = "pacman-" + std::to_string(t);
+      r.tightness = t;
+      runs.push_back(r);
+      r.planner = "prm";
+      r.status = t > 0.6 ? "not_found" : "found";
+      runs.push_back(r);
+    }
+  TempDir dir;
+  const std::string svg = dir.file("t.svg", tightnessPlot(summarize(runs), "t"));
+  EXPECT_EQ(runCommand("rsvg-convert " + quote(svg) + " -o " + quote(dir.path("t.png"))).code, 0);
+  EXPECT_NE(readFile(svg).find("3/3"), std::string::npos);  // the unsolved runs are shown
+}
+
+TEST(BenchCommand, RecordsRunsResumesShardsAndMerges) {
+  TempDir dir;
+  const std::string scene = quote(scenario("translating/cup.json"));
+  const std::string common = scene + " --planners mms,prm-bridge --runs 2 --time-limit 10";
+  Outcome r = runMms("bench " + common + " -o " + quote(dir.path("all")));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(readFile(dir.path("all/runs.jsonl"))), 4u);
+  for (const char* f : {"all/report.md", "all/results.csv", "all/ompl/cup.log"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path(f))) << f;
+  EXPECT_NE(r.err.find("[4/4]"), std::string::npos);  // progress
+  // Rerun: nothing left to do.
+  r = runMms("bench " + common + " -o " + quote(dir.path("all")));
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("0 runs (4 already recorded)"), std::string::npos) << r.out;
+  // Two shards cover the run list disjointly; merged they hold every run once.
+  for (const char* k : {"1", "2"})
+    ASSERT_EQ(runMms("bench " + common + " --shard " + k + "/2 -o " + quote(dir.path(std::string("s") + k))).code, 0);
+  const size_t a = lines(readFile(dir.path("s1/runs-1-of-2.jsonl"))), b = lines(readFile(dir.path("s2/runs-2-of-2.jsonl")));
+  EXPECT_EQ(a + b, 4u);
+  EXPECT_GT(a, 0u);
+  r = runMms("bench-merge " + quote(dir.path("s1")) + " " + quote(dir.path("s2")) + " -o " + quote(dir.path("m")));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(lines(readFile(dir.path("m/runs.jsonl"))), 4u);
+}
+
+TEST(BenchCommand, MemoryLimitIsEnforcedAndRecorded) {
+  TempDir dir;
+  // The sealed scene grows its roadmap until the time limit: far past 100 MB.
+  const Outcome r = runMms("bench " + quote(scenario("one-robot/sealed-ring.json")) +
+                           " --planners mms --runs 1 --time-limit 20 --memory-limit 100 -o " + quote(dir.path("b")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  const nlohmann::json rec = nlohmann::json::parse(readFile(dir.path("b/runs.jsonl")));
+  EXPECT_EQ(rec["status"], "crashed") << rec.dump();
+  EXPECT_EQ(rec["memory_limit_mb"], 100.0);
+  EXPECT_LT(rec["wall_seconds"].get<double>(), 20.0);  // stopped by memory, not by time
+}
+
+TEST(BenchCommand, BadOptionsExitTwo) {
+  TempDir dir;
+  const std::string scene = quote(scenario("translating/cup.json"));
+  for (const std::string& opts : {std::string("--shard 3/2"), std::string("--planners mms,astar"),
+                                  std::string("--param prm"), std::string("--sweep-pacman 1.5")}) {
+    const Outcome r = runMms("bench " + scene + " " + opts + " -o " + quote(dir.path("x")));
+    EXPECT_EQ(r.code, 2) << opts;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << opts << ": " << r.err;
+  }
+}
