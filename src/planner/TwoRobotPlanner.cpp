@@ -11,15 +11,26 @@ TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
   for (size_t r = 0; r < 2; ++r) {
     translates_[r] = scene_.robots[r].motion == Motion::Translate;
     worlds_[r] = std::make_unique<SliceWorld>(scene_, r);
-    Stopwatch watch;
+    angles_[r] = std::make_unique<AngleSequence>(settings_.nTheta, rng_.uniform(0, 2 * M_PI));
     if (translates_[r]) {
+      Stopwatch watch;
       base_[r].emplace_back(*worlds_[r], exact::rationalAngleNear(scene_.robots[r].start.theta, 30));
+      stats_.baseSliceSeconds += watch.seconds();
     } else {
-      AngleSequence angles(settings_.nTheta, rng_.uniform(0, 2 * M_PI));
-      for (size_t k = 0; k < settings_.nTheta; ++k)
-        base_[r].emplace_back(*worlds_[r], exact::rationalAngleNear(angles.next(), 30));
+      addAngles(r, settings_.nTheta, Termination(1e9));
     }
+  }
+}
+
+// More angles for a rigid robot: the next ones of its evenly spread sequence (the midpoints of
+// the current set), each a new base slice and a new slice in every subspace where it moves.
+void TwoRobotPlanner::addAngles(size_t robot, size_t count, const Termination& stop) {
+  for (size_t i = 0; i < count && !stop(); ++i) {
+    Stopwatch watch;
+    base_[robot].emplace_back(*worlds_[robot], exact::rationalAngleNear(angles_[robot]->next(), 30));
     stats_.baseSliceSeconds += watch.seconds();
+    for (auto& sub : subspaces_)
+      if (sub->moving() == robot && !stop()) sub->addSlice(base_[robot].back());
   }
 }
 
@@ -146,7 +157,11 @@ TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
     }
     if (progress) progress(finish(result, MmsResult::Status::NotFound).stats);
     if (stop()) return finish(result, stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
+    // Grow both the fixings and the angle sets: a narrow passage may need the two robots'
+    // angles closer than the current sets offer (the Pacman's mouth and the square).
     target *= 2;
+    for (size_t r = 0; r < 2; ++r)
+      if (!translates_[r]) addAngles(r, base_[r].size(), stop);
   }
 }
 

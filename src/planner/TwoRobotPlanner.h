@@ -30,6 +30,8 @@ struct TwoRobotSettings {
   size_t nTheta = 16;   // n_theta: angles per robot, shared by all its subspaces
   size_t nLines = 128;  // n_l: random lines per subspace
   size_t nFixings = 8;  // n_f: fixings per robot in the first round; doubles every round
+  // Every round after the first also doubles n_theta (the new angles are the midpoints), so
+  // passages that need the robots' angles aligned closely are reached too.
   size_t shortcutAttempts = 300;
 };
 
@@ -67,6 +69,7 @@ class TwoRobotPlanner {
   void addSubspace(const Fixing& held, const Termination& stop);
   long nodeFor(const Subspace& sub, const Fixing& f) const;
   Vec2 linePoint(size_t robot);
+  void addAngles(size_t robot, size_t count, const Termination& stop);
   TwoRobotResult finish(TwoRobotResult r, MmsResult::Status status);
 
   Scene scene_;
@@ -75,6 +78,7 @@ class TwoRobotPlanner {
   Random rng_;
   std::array<bool, 2> translates_;
   std::array<std::unique_ptr<SliceWorld>, 2> worlds_;
+  std::array<std::unique_ptr<AngleSequence>, 2> angles_;
   std::array<std::vector<Slice>, 2> base_;  // per robot: its slice at each of its angles, obstacles only
   std::vector<Fixing> fixings_;             // fixings_[i] is held in subspaces_[i]
   std::vector<std::unique_ptr<Subspace>> subspaces_;
