@@ -97,6 +97,9 @@ int planOmpl(const PlanArgs& a, const Scene& scene) {
   s.neighbours = a.neighbours;
   s.segmentFactor = a.segmentFactor;
   s.simplify = a.simplify;
+#if !defined(__SANITIZE_ADDRESS__)
+  s.keepUntilExit = true;  // under ASan, free everything so leaks stay visible
+#endif
   const OmplResult r = planWithOmpl(scene, s, Termination(a.timeLimit));
   const char* status = r.status == OmplResult::Status::Found ? "found"
                        : r.status == OmplResult::Status::Uncertified ? "uncertified" : "not_found";
@@ -114,8 +117,11 @@ int planOmpl(const PlanArgs& a, const Scene& scene) {
     return 1;
   }
   if (r.status == OmplResult::Status::NotFound) {
-    std::printf("%s: %s found no path within %.3g s (%zu states)\n", a.scene.c_str(), a.planner.c_str(), a.timeLimit,
-                r.states);
+    if (r.states)
+      std::printf("%s: %s found no path within %.3g s (%zu states)\n", a.scene.c_str(), a.planner.c_str(), a.timeLimit,
+                  r.states);
+    else
+      std::printf("%s: %s found no path within %.3g s\n", a.scene.c_str(), a.planner.c_str(), a.timeLimit);
     writeStats(a, j);
     return 1;
   }

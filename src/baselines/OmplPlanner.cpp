@@ -190,6 +190,18 @@ ob::PlannerPtr makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings
   throw std::invalid_argument("unknown planner '" + n + "'");
 }
 
+// Vertices of the planner's graph or tree. PRM reports its milestones cheaply; for the others
+// OMPL's PlannerData costs seconds on graphs of a million states, so it is only taken while
+// the time limit leaves room (otherwise 0: not counted).
+size_t graphSize(ob::Planner& planner, const ob::SpaceInformationPtr& si, const Termination& stop) {
+  const auto& props = planner.getPlannerProgressProperties();
+  if (auto it = props.find("milestone count INTEGER"); it != props.end()) return std::stoul(it->second());
+  if (stop()) return 0;
+  ob::PlannerData data(si);
+  planner.getPlannerData(data);
+  return data.numVertices();
+}
+
 }  // namespace
 
 OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop) {
@@ -197,7 +209,13 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   ompl::RNG::setSeed(settings.seed);
   const CollisionChecker checker(scene);
   const Layout layout{scene};
-  og::SimpleSetup setup(makeSpace(scene));
+  // Freeing a million states takes seconds; a process about to exit can skip it.
+  auto owned = std::make_shared<og::SimpleSetup>(makeSpace(scene));
+  og::SimpleSetup& setup = *owned;
+  if (settings.keepUntilExit) {
+    static auto* kept = new std::vector<std::shared_ptr<og::SimpleSetup>>();  // reachable, never freed
+    kept->push_back(owned);
+  }
   const ob::SpaceInformationPtr si = setup.getSpaceInformation();
   setup.setStateValidityChecker(std::make_shared<Validity>(si, layout, checker));
   si->setStateValidityCheckingResolution(settings.resolution);
@@ -214,9 +232,7 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   Stopwatch watch;
   const ob::PlannerStatus status = setup.solve(ob::PlannerTerminationCondition([&] { return stop(); }));
   r.seconds = watch.seconds();
-  ob::PlannerData data(si);
-  setup.getPlanner()->getPlannerData(data);
-  r.states = data.numVertices();
+  r.states = graphSize(*setup.getPlanner(), si, stop);
   if (status != ob::PlannerStatus::EXACT_SOLUTION) return r;
   if (settings.simplify) setup.simplifySolution();
 

@@ -24,6 +24,9 @@ struct OmplSettings {
   unsigned neighbours = 0;      // PRM family: k nearest neighbours; 0 = OMPL's default
   double segmentFactor = 10;    // U-OB-PRM: segment length l = factor x resolution x extent
   bool simplify = false;        // OMPL's path simplifier on the returned path
+  /// Leave OMPL's planner and states allocated (a command-line run about to exit): freeing
+  /// a million states would overrun the time limit by seconds.
+  bool keepUntilExit = false;
 };
 
 struct OmplResult {

@@ -219,7 +219,7 @@ std::string tightnessPlot(const std::vector<Summary>& summaries, const std::stri
     tMax = std::max(tMax, s.tightness);
     limit = std::max(limit, s.timeLimit);
     if (s.solved) {
-      yMin = std::min(yMin, std::max(1e-4, s.meanTrimmed - s.stdevTrimmed));
+      yMin = std::min(yMin, 0.5 * s.meanTrimmed);
       yMax = std::max(yMax, s.meanTrimmed + s.stdevTrimmed);
     }
   }
@@ -277,13 +277,15 @@ std::string tightnessPlot(const std::vector<Summary>& summaries, const std::stri
       if (s->solved) {
         line += fmt("%.1f", x) + "," + fmt("%.1f", Y(s->meanTrimmed)) + " ";
         svg << "<line x1=\"" << x << "\" x2=\"" << x << "\" y1=\"" << Y(s->meanTrimmed + s->stdevTrimmed) << "\" y2=\""
-            << Y(std::max(yMin, s->meanTrimmed - s->stdevTrimmed)) << "\" stroke=\"" << c << "\"/>\n"
+            // On a log axis a stdev larger than the mean has no lower end: stop at half the mean.
+            << Y(std::max(0.5 * s->meanTrimmed, s->meanTrimmed - s->stdevTrimmed)) << "\" stroke=\"" << c << "\"/>\n"
             << "<circle cx=\"" << x << "\" cy=\"" << Y(s->meanTrimmed) << "\" r=\"3.5\" fill=\"" << c << "\"/>\n";
       }
       if (s->solved < s->runs)  // unsolved runs: a cross at the time limit with the count
         svg << "<text x=\"" << x << "\" y=\"" << Y(limit) + 4 << "\" text-anchor=\"middle\" fill=\"" << c
-            << "\" font-weight=\"bold\">×</text><text x=\"" << x + 5 << "\" y=\"" << Y(limit) - 6 << "\" fill=\"" << c
-            << "\" font-size=\"9\">" << s->runs - s->solved << "/" << s->runs << "</text>\n";
+            << "\" font-weight=\"bold\">×</text><text x=\"" << x << "\" y=\"" << Y(limit) - 8 - 9 * double(pi)
+            << "\" text-anchor=\"middle\" fill=\"" << c << "\" font-size=\"8\">" << s->runs - s->solved << "/"
+            << s->runs << "</text>\n";
     }
     if (!line.empty()) svg << "<polyline fill=\"none\" stroke=\"" << c << "\" points=\"" << line << "\"/>\n";
     svg << "<rect x=\"" << W - R + 12 << "\" y=\"" << T + 18 * pi << "\" width=\"12\" height=\"12\" fill=\"" << c
