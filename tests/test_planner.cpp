@@ -36,7 +36,7 @@ TEST_P(SolvableScene, SolvedWithCertifiedPathsForSeveralSeeds) {
     // An independent check of what the planner returned.
     const PathCheckResult c = checkPath(s, checker, p);
     EXPECT_TRUE(c.ok) << c.reason;
-    EXPECT_GT(r.stats.slices, 0u);
+    EXPECT_GT(r.stats.manifolds.slices, 0u);
     EXPECT_GT(r.stats.graphEdges, 0u);
   }
 }
@@ -94,7 +94,7 @@ TEST(Plan, TranslateOnlyRobotUsesItsExactFreeSpace) {
   const MmsResult found = plan(s, 1, 10);
   ASSERT_EQ(found.status, MmsResult::Status::Found);
   for (const Config& q : found.waypoints) EXPECT_EQ(q[2], 0.3);
-  EXPECT_EQ(found.stats.slices, 1u);  // one exact slice, no sampling
+  EXPECT_EQ(found.stats.manifolds.slices, 1u);  // one exact slice, no sampling
   // Close the gap above the wall: the two sides are different cells and the answer is
   // immediate, not a time-out.
   s.obstacles = {{{4, 0}, {6, 0}, {6, 10}, {4, 10}}};

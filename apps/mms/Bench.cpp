@@ -46,14 +46,6 @@ std::string selfExe() {
   return p.string();
 }
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, sep);)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
 std::string key(const RunRecord& r) {
   return r.scene + "|" + r.planner + "|" + r.parameters + "|" + std::to_string(r.seed);
 }
@@ -126,6 +118,14 @@ void writeReports(const std::string& dir) {
 }
 
 }  // namespace
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  for (std::string item; std::getline(ss, item, sep);)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
 
 int bench(const BenchArgs& a) {
   fs::create_directories(a.output);

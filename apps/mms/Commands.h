@@ -6,6 +6,9 @@
 
 namespace mms::cli {
 
+/// "a,b,,c" -> {"a", "b", "c"}: the items of a separated list, empty ones dropped.
+std::vector<std::string> split(const std::string& s, char sep);
+
 struct ValidateArgs {
   std::string scene;
   bool quiet = false;

@@ -17,10 +17,12 @@ namespace {
 
 void printStats(const MmsStats& s) {
   std::printf("  manifolds: %zu slices (%zu cells), %zu lines (%zu arcs); graph %zu nodes, %zu edges; %zu rounds\n",
-              s.slices, s.sliceCells, s.lines, s.lineArcs, s.graphNodes, s.graphEdges, s.rounds);
+              s.manifolds.slices, s.manifolds.sliceCells, s.manifolds.lines, s.manifolds.lineArcs, s.graphNodes,
+              s.graphEdges, s.rounds);
   std::printf("  time: %.3f s total = slices %.3f + lines %.3f + connect %.3f + search %.3f + motion %.3f + "
               "shortcut/certify %.3f\n",
-              s.totalSeconds, s.sliceSeconds, s.lineSeconds, s.connectSeconds, s.searchSeconds,
+              s.totalSeconds, s.manifolds.sliceSeconds, s.manifolds.lineSeconds, s.manifolds.connectSeconds,
+              s.searchSeconds,
               s.motionSeconds, s.certifySeconds);
   if (s.rejectedPaths) std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
 }
@@ -239,7 +241,7 @@ int plan(const PlanArgs& a) {
     auto progress = [&](const MmsStats& s) {
       if (a.quiet || clock.seconds() < 1.0) return;
       std::fprintf(stderr, "mms plan: %.1f s, round %zu: %zu slices, %zu lines, graph %zu nodes / %zu edges\n",
-                   clock.seconds(), s.rounds, s.slices, s.lines, s.graphNodes, s.graphEdges);
+                   clock.seconds(), s.rounds, s.manifolds.slices, s.manifolds.lines, s.graphNodes, s.graphEdges);
     };
     const MmsResult res = planner.solve(q.start, q.goal, Termination(a.timeLimit), progress);
     nlohmann::json j = runSummary(a, res.status == MmsResult::Status::Found ? "found" : "not_found", res.stats.totalSeconds);
@@ -247,8 +249,9 @@ int plan(const PlanArgs& a) {
     j["graph_nodes"] = ms.graphNodes;
     j["graph_edges"] = ms.graphEdges;
     j["parameters"] = {{"n_theta", settings.nTheta}, {"n_lines", settings.nLines}};
-    j["manifolds"] = {{"slices", ms.slices}, {"lines", ms.lines}, {"path_cells", ms.pathCells}};
-    j["phases"] = {{"slices", ms.sliceSeconds}, {"lines", ms.lineSeconds}, {"connect", ms.connectSeconds},
+    j["manifolds"] = {{"slices", ms.manifolds.slices}, {"lines", ms.manifolds.lines}, {"path_cells", ms.pathCells}};
+    j["phases"] = {{"slices", ms.manifolds.sliceSeconds}, {"lines", ms.manifolds.lineSeconds},
+                   {"connect", ms.manifolds.connectSeconds},
                    {"search", ms.searchSeconds}, {"motion", ms.motionSeconds}, {"certify", ms.certifySeconds}};
     if (res.status == MmsResult::Status::Found) addPath(j, res.certificate, res.waypoints.size());
     summaries.push_back(j);
@@ -265,10 +268,10 @@ int plan(const PlanArgs& a) {
     path.extra = {{"planner", "mms"},
                   {"seed", a.seed},
                   {"statistics",
-                   {{"slices", st.slices},
-                    {"lines", st.lines},
-                    {"slice_cells", st.sliceCells},
-                    {"line_arcs", st.lineArcs},
+                   {{"slices", st.manifolds.slices},
+                    {"lines", st.manifolds.lines},
+                    {"slice_cells", st.manifolds.sliceCells},
+                    {"line_arcs", st.manifolds.lineArcs},
                     {"graph_nodes", st.graphNodes},
                     {"graph_edges", st.graphEdges},
                     {"path_cells", st.pathCells}}}};

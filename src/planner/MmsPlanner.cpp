@@ -34,7 +34,7 @@ MmsPlanner::MmsPlanner(const Scene& scene, size_t robot, MmsSettings settings)
       rng_(settings.seed),
       angles_(settings.nTheta, rng_.uniform(0, 2 * M_PI)) {
   subspaces_.push_back(std::make_unique<Subspace>(0, scene_, checker_, 0, std::vector<std::pair<size_t, Pose>>{},
-                                                  graph_, subspaceStats_));
+                                                  graph_, stats_.manifolds));
 }
 
 MmsPlanner::~MmsPlanner() = default;
@@ -56,19 +56,11 @@ Vec2 MmsPlanner::nextLinePoint() {
 void MmsPlanner::addSlice(double theta) {
   Stopwatch watch;
   const Slice base(sliceWorld_, exact::rationalAngleNear(theta, 30), settings_.pointLocation);
-  subspaceStats_.sliceSeconds += watch.seconds();
+  stats_.manifolds.sliceSeconds += watch.seconds();
   subspace().addSlice(base);  // nothing is held: shares the base's cells
 }
 
 MmsResult MmsPlanner::finish(MmsResult result, MmsResult::Status status, double seconds) {
-  stats_.slices = subspaceStats_.slices;
-  stats_.lines = subspaceStats_.lines;
-  stats_.sliceCells = subspaceStats_.sliceCells;
-  stats_.lineArcs = subspaceStats_.lineArcs;
-  stats_.sliceSeconds = subspaceStats_.sliceSeconds;
-  stats_.lineSeconds = subspaceStats_.lineSeconds;
-  stats_.connectSeconds = subspaceStats_.connectSeconds;
-  stats_.lineStats = subspaceStats_.lineStats;
   stats_.graphNodes = graph_.nodeCount();
   stats_.graphEdges = graph_.edgeCount();
   stats_.totalSeconds += seconds;

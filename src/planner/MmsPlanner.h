@@ -43,13 +43,11 @@ class AngleSequence {
 };
 
 struct MmsStats {
-  size_t rounds = 0, slices = 0, lines = 0, sliceCells = 0, lineArcs = 0;
-  size_t graphNodes = 0, graphEdges = 0;
-  size_t pathCells = 0;        // FSCs on the graph path
-  size_t rejectedPaths = 0;    // candidate motions the checker refused
-  double sliceSeconds = 0, lineSeconds = 0, connectSeconds = 0, searchSeconds = 0;
-  double motionSeconds = 0, certifySeconds = 0, totalSeconds = 0;
-  LineStats lineStats;
+  SubspaceStats manifolds;  // slices, lines, their cells and build times
+  size_t rounds = 0, graphNodes = 0, graphEdges = 0;
+  size_t pathCells = 0;      // FSCs on the graph path
+  size_t rejectedPaths = 0;  // candidate motions the checker refused
+  double searchSeconds = 0, motionSeconds = 0, certifySeconds = 0, totalSeconds = 0;
 };
 
 struct MmsResult {
@@ -89,7 +87,6 @@ class MmsPlanner {
   Random rng_;
   AngleSequence angles_;
   ConnectivityGraph graph_;
-  SubspaceStats subspaceStats_;
   std::vector<std::unique_ptr<Subspace>> subspaces_;  // exactly one: no robot is held
   MmsStats stats_;
 };
