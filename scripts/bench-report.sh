@@ -19,5 +19,9 @@ build/mms bench \
 build/mms bench --sweep-pacman 0,0.5,0.8,0.9,0.95 \
   --planners mms,prm,obprm,uobprm,prm-bridge,rrtconnect \
   --runs 5 --time-limit 20 --jobs 2 -o "$out"
+# The other five planners on one Pacman scene, so every planner runs on every scenario.
+build/mms bench --sweep-pacman 0.5 \
+  --planners prm-gaussian,rrt,kpiece,bkpiece,lazyprm \
+  --runs 5 --time-limit 20 --jobs 2 -o "$out"
 { echo; echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(free -g | awk '/Mem/{print $2}') GiB"; } >> "$out/report.md"
 echo "bench-report: $out/report.md, $out/tightness.svg, $out/results.csv, $out/ompl/*.log"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds mms, and runs the demo: plan a bundled one-robot scene (a bar
-# that must turn to leave a bug trap), certify the path, and draw it as an animated SVG.
+# Installs what is missing, builds mms, and runs the demo: plan the paper's Pacman scenario (a
+# C-shaped robot must swallow a square, turn around it and release it so the two can swap ends
+# of a corridor), certify the motion, and draw it as an animated SVG (demo.svg).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -8,8 +9,8 @@ bash scripts/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target mms
 
-scene=scenarios/one-robot/bug-trap.json
+scene=scenarios/two-robots/pacman-0.5.json
 build/mms validate "$scene"
-build/mms plan "$scene" --seed 1 -o demo-path.json --svg demo.svg --svg-roadmap
+build/mms plan "$scene" --seed 1 -o demo-path.json --svg demo.svg
 build/mms check "$scene" demo-path.json
-echo "demo: open demo.svg in a browser to watch the planned motion (green cells: the slices it uses)"
+echo "demo: open demo.svg in a browser to watch the Pacman swallow the square and the two swap places"
