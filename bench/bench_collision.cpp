@@ -23,7 +23,8 @@ struct Fixture {
     Random rng(1);
     const Box& b = scene.bounds;
     for (int i = 0; i < 4096; ++i)
-      poses.push_back({rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax), rng.uniform(-M_PI, M_PI)});
+      poses.push_back(
+          {rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax), rng.uniform(-M_PI, M_PI)});
   }
 };
 
@@ -47,7 +48,8 @@ void BM_RobotClearance(benchmark::State& state) {
   const Fixture& f = fixture();
   const CollisionChecker checker(f.scene);
   size_t i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(checker.robotClearance(0, f.poses[i++ & 4095]).distance);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(checker.robotClearance(0, f.poses[i++ & 4095]).distance);
 }
 BENCHMARK(BM_RobotClearance);
 

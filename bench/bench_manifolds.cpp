@@ -75,11 +75,18 @@ BENCHMARK(BM_Locate<PointLocation::Landmarks>)->Name("BM_Locate/landmarks");
 template <PointLocation kStrategy>
 void BM_SliceWithLocator(benchmark::State& state) {
   const SliceWorld world(referenceScene(), 0);
-  for (auto _ : state) benchmark::DoNotOptimize(Slice(world, exact::rationalAngleNear(0.3, 30), kStrategy).fscCount());
+  for (auto _ : state)
+    benchmark::DoNotOptimize(Slice(world, exact::rationalAngleNear(0.3, 30), kStrategy).fscCount());
 }
-BENCHMARK(BM_SliceWithLocator<PointLocation::Walk>)->Name("BM_SliceBuild/walk")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SliceWithLocator<PointLocation::Trapezoid>)->Name("BM_SliceBuild/trapezoid")->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SliceWithLocator<PointLocation::Landmarks>)->Name("BM_SliceBuild/landmarks")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SliceWithLocator<PointLocation::Walk>)
+    ->Name("BM_SliceBuild/walk")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SliceWithLocator<PointLocation::Trapezoid>)
+    ->Name("BM_SliceBuild/trapezoid")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SliceWithLocator<PointLocation::Landmarks>)
+    ->Name("BM_SliceBuild/landmarks")
+    ->Unit(benchmark::kMillisecond);
 
 // A whole query (fresh planner each time) on a bundled scene; seeds cycle so the figure is
 // a mean over seeds.
@@ -97,6 +104,7 @@ void BM_Query(benchmark::State& state, const char* file) {
 BENCHMARK_CAPTURE(BM_Query, bar_slot, "one-robot/bar-slot.json")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Query, bug_trap, "one-robot/bug-trap.json")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Query, maze, "one-robot/maze.json")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Query, corridor_corner, "one-robot/corridor-corner.json")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Query, corridor_corner, "one-robot/corridor-corner.json")
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -69,7 +69,9 @@ inline Outcome runCommand(const std::string& command) {
 }
 
 /// Runs the mms binary with the given arguments (already quoted where needed).
-inline Outcome runMms(const std::string& args) { return runCommand(std::string(MMS_BINARY) + " " + args); }
+inline Outcome runMms(const std::string& args) {
+  return runCommand(std::string(MMS_BINARY) + " " + args);
+}
 
 inline std::string quote(const std::string& s) { return "'" + s + "'"; }
 

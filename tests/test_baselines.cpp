@@ -1,6 +1,5 @@
 // OMPL baselines on mms scenes: same checker, every reported path certified.
 #include <gtest/gtest.h>
-
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 
@@ -120,8 +119,9 @@ TEST(Uobprm, SamplesAreValidAndMostlyNearObstacles) {
 TEST(Ompl, PlanCommandWithABaseline) {
   TempDir dir;
   const std::string scene = quote(scenario("one-robot/bar-slot.json"));
-  const Outcome r = runMms("plan " + scene + " --planner prm-bridge --time-limit 20 -o " + quote(dir.path("p.json")) +
-                           " --stats-json " + quote(dir.path("s.json")));
+  const Outcome r =
+      runMms("plan " + scene + " --planner prm-bridge --time-limit 20 -o " +
+             quote(dir.path("p.json")) + " --stats-json " + quote(dir.path("s.json")));
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_EQ(runMms("check " + scene + " " + quote(dir.path("p.json"))).code, 0);
   EXPECT_NE(readFile(dir.path("s.json")).find("\"status\": \"found\""), std::string::npos);

@@ -12,7 +12,8 @@ using namespace mms::test;
 
 namespace {
 
-RunRecord run(const std::string& planner, uint64_t seed, const std::string& status, double seconds) {
+RunRecord run(const std::string& planner, uint64_t seed, const std::string& status,
+              double seconds) {
   RunRecord r;
   r.scene = "s";
   r.planner = planner;
@@ -58,9 +59,11 @@ TEST(BenchReport, OmplLogIsReadByOmplBenchmarkStatistics) {
   const auto logs = omplLogs(runs, "host");
   ASSERT_EQ(logs.size(), 1u);
   const std::string log = dir.file("s.log", logs[0].second);
-  const Outcome r = runCommand("ompl_benchmark_statistics " + quote(log) + " -d " + quote(dir.path("b.db")));
-  ASSERT_EQ(r.code, 0) << "ompl_benchmark_statistics (Debian package ompl-demos, installed by scripts/setup.sh): "
-                       << r.out << r.err;
+  const Outcome r =
+      runCommand("ompl_benchmark_statistics " + quote(log) + " -d " + quote(dir.path("b.db")));
+  ASSERT_EQ(r.code, 0)
+      << "ompl_benchmark_statistics (Debian package ompl-demos, installed by scripts/setup.sh): "
+      << r.out << r.err;
   EXPECT_NE(r.out.find("Parsing data for mms"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Parsing data for prm"), std::string::npos);
 }
@@ -99,11 +102,16 @@ TEST(BenchCommand, RecordsRunsResumesShardsAndMerges) {
   EXPECT_NE(r.out.find("0 runs (4 already recorded)"), std::string::npos) << r.out;
   // Two shards cover the run list disjointly; merged they hold every run once.
   for (const char* k : {"1", "2"})
-    ASSERT_EQ(runMms("bench " + common + " --shard " + k + "/2 -o " + quote(dir.path(std::string("s") + k))).code, 0);
-  const size_t a = lines(readFile(dir.path("s1/runs-1-of-2.jsonl"))), b = lines(readFile(dir.path("s2/runs-2-of-2.jsonl")));
+    ASSERT_EQ(runMms("bench " + common + " --shard " + k + "/2 -o " +
+                     quote(dir.path(std::string("s") + k)))
+                  .code,
+              0);
+  const size_t a = lines(readFile(dir.path("s1/runs-1-of-2.jsonl"))),
+               b = lines(readFile(dir.path("s2/runs-2-of-2.jsonl")));
   EXPECT_EQ(a + b, 4u);
   EXPECT_GT(a, 0u);
-  r = runMms("bench-merge " + quote(dir.path("s1")) + " " + quote(dir.path("s2")) + " -o " + quote(dir.path("m")));
+  r = runMms("bench-merge " + quote(dir.path("s1")) + " " + quote(dir.path("s2")) + " -o " +
+             quote(dir.path("m")));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(lines(readFile(dir.path("m/runs.jsonl"))), 4u);
 }
@@ -112,7 +120,8 @@ TEST(BenchCommand, MemoryLimitIsEnforcedAndRecorded) {
   TempDir dir;
   // The sealed scene grows its roadmap until the time limit: far past 100 MB.
   const Outcome r = runMms("bench " + quote(scenario("one-robot/sealed-ring.json")) +
-                           " --planners mms --runs 1 --time-limit 20 --memory-limit 100 -o " + quote(dir.path("b")));
+                           " --planners mms --runs 1 --time-limit 20 --memory-limit 100 -o " +
+                           quote(dir.path("b")));
   EXPECT_EQ(r.code, 0) << r.err;
   const nlohmann::json rec = nlohmann::json::parse(readFile(dir.path("b/runs.jsonl")));
   EXPECT_EQ(rec["status"], "crashed") << rec.dump();

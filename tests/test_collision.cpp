@@ -54,7 +54,8 @@ TEST(CollisionChecker, AgreesWithExactPredicatesOnRandomPlacements) {
   int free = 0, blocked = 0, vsShrunk = 0, vsShape = 0, unexplained = 0;
   const int n = 10000;
   for (int i = 0; i < n; ++i) {
-    const Pose p{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax), rng.uniform(-M_PI, M_PI)};
+    const Pose p{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax),
+                 rng.uniform(-M_PI, M_PI)};
     const bool fast = checker.robotFree(0, p);
     (fast ? free : blocked)++;
     // Same definition, exact arithmetic: the shrunk shape's interior.
@@ -65,8 +66,10 @@ TEST(CollisionChecker, AgreesWithExactPredicatesOnRandomPlacements) {
       if (!exactFree(s, placedRing(deeper.ring, p))) ++unexplained;
     }
   }
-  std::printf("[ info ] %d placements: %d free, %d blocked; %d differ from the exact answer for the "
-              "unshrunk shape (all within the tolerance band)\n", n, free, blocked, vsShape);
+  std::printf(
+      "[ info ] %d placements: %d free, %d blocked; %d differ from the exact answer for the "
+      "unshrunk shape (all within the tolerance band)\n",
+      n, free, blocked, vsShape);
   EXPECT_EQ(vsShrunk, 0);
   EXPECT_EQ(unexplained, 0);
   EXPECT_LE(vsShape, 2);  // uniform placements essentially never land within 1e-6 of contact
@@ -85,8 +88,10 @@ TEST(CollisionChecker, TreatsNearContactsAsTouching) {
   const Box& b = s.bounds;
   int contacts = 0;
   for (int attempt = 0; attempt < 4000 && contacts < 300; ++attempt) {
-    const Pose a{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax), rng.uniform(-M_PI, M_PI)};
-    const Pose c{a.x + rng.uniform(-3, 3), a.y + rng.uniform(-3, 3), a.theta + rng.uniform(-0.5, 0.5)};
+    const Pose a{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax),
+                 rng.uniform(-M_PI, M_PI)};
+    const Pose c{a.x + rng.uniform(-3, 3), a.y + rng.uniform(-3, 3),
+                 a.theta + rng.uniform(-0.5, 0.5)};
     if (!exactFree(s, placedRing(shape, a)) || exactFree(s, placedRing(shape, c))) continue;
     double lo = 0, hi = 1;
     auto at = [&](double t) {
@@ -147,13 +152,13 @@ TEST(CollisionChecker, ExactContactsAreFreeAndPenetrationIsNot) {
   s.robots = {r};
   const CollisionChecker c(s);
   const double t = s.tolerance();
-  EXPECT_TRUE(c.robotFree(0, {3, 5, 0}));         // edge on edge
-  EXPECT_TRUE(c.robotFree(0, {3, 3, 0}));         // corner on corner
-  EXPECT_TRUE(c.robotFree(0, {1, 1, 0}));         // touching two sides of the bounds
+  EXPECT_TRUE(c.robotFree(0, {3, 5, 0}));            // edge on edge
+  EXPECT_TRUE(c.robotFree(0, {3, 3, 0}));            // corner on corner
+  EXPECT_TRUE(c.robotFree(0, {1, 1, 0}));            // touching two sides of the bounds
   EXPECT_TRUE(c.robotFree(0, {3 + 0.5 * t, 5, 0}));  // within tolerance
   EXPECT_FALSE(c.robotFree(0, {3 + 3 * t, 5, 0}));
-  EXPECT_FALSE(c.robotFree(0, {1 - 3 * t, 5, 0}));   // leaves the bounds
-  EXPECT_FALSE(c.robotFree(0, {5, 5, 0.3}));          // inside the obstacle entirely
+  EXPECT_FALSE(c.robotFree(0, {1 - 3 * t, 5, 0}));  // leaves the bounds
+  EXPECT_FALSE(c.robotFree(0, {5, 5, 0.3}));        // inside the obstacle entirely
   EXPECT_EQ(c.robotContact(0, {5, 5, 0}).kind, Contact::Kind::Obstacle);
   EXPECT_EQ(c.robotContact(0, {0.5, 5, 0}).kind, Contact::Kind::Bounds);
   // A diamond whose tip touches the obstacle's edge.
@@ -209,8 +214,8 @@ TEST(Exact, RationalAnglesAreCloseAndRotationsExact) {
 
 TEST(Exact, InteriorPredicateIgnoresTouching) {
   const Ring a = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  EXPECT_FALSE(exact::interiorsIntersect(a, {{1, 0}, {2, 0}, {2, 1}, {1, 1}}));   // shared edge
-  EXPECT_FALSE(exact::interiorsIntersect(a, {{1, 1}, {2, 1}, {2, 2}, {1, 2}}));   // shared corner
+  EXPECT_FALSE(exact::interiorsIntersect(a, {{1, 0}, {2, 0}, {2, 1}, {1, 1}}));  // shared edge
+  EXPECT_FALSE(exact::interiorsIntersect(a, {{1, 1}, {2, 1}, {2, 2}, {1, 2}}));  // shared corner
   EXPECT_TRUE(exact::interiorsIntersect(a, {{0.5, 0.5}, {2, 0.5}, {2, 2}, {0.5, 2}}));
   EXPECT_TRUE(exact::interiorsIntersect(a, {{0.2, 0.2}, {0.8, 0.2}, {0.5, 0.8}}));  // contained
 }

@@ -62,7 +62,8 @@ TEST_P(SliceVsChecker, CellsAreFreeAndTheirOutsideIsNot) {
     ASSERT_GT(slice.fscCount(), 0u);
     // Uniform points: a point in a cell is a free placement.
     for (int i = 0; i < 2000; ++i) {
-      const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax), rng.uniform(s.bounds.ymin, s.bounds.ymax)};
+      const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax),
+                   rng.uniform(s.bounds.ymin, s.bounds.ymax)};
       if (slice.locate(p) >= 0) {
         ++inside;
         EXPECT_TRUE(checker.robotFree(0, {p.x, p.y, theta})) << p.x << "," << p.y;
@@ -127,7 +128,8 @@ TEST_P(LineVsChecker, ArcsMatchSampledAngles) {
   Random rng(GetParam() + 100);
   size_t lines = 0, mismatches = 0, samples = 0, partial = 0;
   for (int k = 0; k < 300; ++k) {
-    const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax), rng.uniform(s.bounds.ymin, s.bounds.ymax)};
+    const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax),
+                 rng.uniform(s.bounds.ymin, s.bounds.ymax)};
     const Line line(world, freeTest(checker), p);
     const std::vector<double> critical = criticalAngles(world, p);
     ++lines;

@@ -61,7 +61,8 @@ TEST_F(BarSlot, PathFreeAtEveryWaypointButThroughTheWallIsRejected) {
 TEST_F(BarSlot, RotationSweepingThroughTheWallIsRejected) {
   // At (-3.5, 0) the bar fits both flat (its tip in the slot) and upright, but turning
   // between the two swings the tip into the upper wall.
-  const Path p = pathOf({{-6, 0, kHalfPi}, {-3.5, 0, kHalfPi}, {-3.5, 0, 0}, {6, 0, 0}, {6, 0, kHalfPi}});
+  const Path p =
+      pathOf({{-6, 0, kHalfPi}, {-3.5, 0, kHalfPi}, {-3.5, 0, 0}, {6, 0, 0}, {6, 0, kHalfPi}});
   const CollisionChecker c(s);
   for (const Config& q : p.waypoints) ASSERT_TRUE(c.isFree(q));
   const PathCheckResult r = check(s, p);
@@ -72,7 +73,8 @@ TEST_F(BarSlot, RotationSweepingThroughTheWallIsRejected) {
 }
 
 TEST_F(BarSlot, EndsMustMatchStartAndGoal) {
-  PathCheckResult r = check(s, pathOf({{-5.9, 0, kHalfPi}, {-6, 0, 0}, {6, 0, 0}, {6, 0, kHalfPi}}));
+  PathCheckResult r =
+      check(s, pathOf({{-5.9, 0, kHalfPi}, {-6, 0, 0}, {6, 0, 0}, {6, 0, kHalfPi}}));
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.reason.find("not the start of robot 'bar'"), std::string::npos);
   r = check(s, pathOf({{-6, 0, kHalfPi}, {-6, 0, 0}, {6, 0, 0}}));
@@ -141,7 +143,8 @@ TEST_F(TouchingScene, SingleWaypointPathWhenStartIsGoal) {
 TEST(TwoRobots, RobotsPassingThroughEachOtherAreRejected) {
   const Scene s = loadScene(scenario("two-robots/niche-swap.json"));
   // Straight swap along the corridor: each waypoint is free, the middle is not.
-  const PathCheckResult r = check(s, pathOf({{1, 0.65, 0, 11, 0.65, 0}, {11, 0.65, 0, 1, 0.65, 0}}));
+  const PathCheckResult r =
+      check(s, pathOf({{1, 0.65, 0, 11, 0.65, 0}, {11, 0.65, 0, 1, 0.65, 0}}));
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.reason.find("robot 'left' hits robot 'right'"), std::string::npos) << r.reason;
   EXPECT_NEAR(r.parameter, 0.45, 0.01);  // they meet when 10 - 20 s = 1 (their width)
@@ -171,7 +174,8 @@ TEST_P(BundledPaths, AcceptedAndCorruptionsRejected) {
   ASSERT_GE(n, 3u);
   TempDir dir;
   auto rejected = [&](const json& bad, const std::string& expect) {
-    const Outcome rr = runMms("check " + quote(scene) + " " + quote(dir.file("bad.json", bad.dump())));
+    const Outcome rr =
+        runMms("check " + quote(scene) + " " + quote(dir.file("bad.json", bad.dump())));
     EXPECT_EQ(rr.code, 1) << bad.dump() << "\n" << rr.out << rr.err;
     EXPECT_NE(rr.out.find("rejected: segment "), std::string::npos) << rr.out;
     EXPECT_NE(rr.out.find(expect), std::string::npos) << rr.out;
@@ -194,8 +198,9 @@ TEST_P(BundledPaths, AcceptedAndCorruptionsRejected) {
   rejected(bad, "not the goal");
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenarios, BundledPaths,
-                         ::testing::Values(Bundled{"one-robot/bar-slot.json", "one-robot/bar-slot.path.json"},
-                                           Bundled{"two-robots/niche-swap.json", "two-robots/niche-swap.path.json"},
-                                           Bundled{"translating/cup.json", "translating/cup.path.json"}),
-                         [](const auto& info) { return std::to_string(info.index); });
+INSTANTIATE_TEST_SUITE_P(
+    Scenarios, BundledPaths,
+    ::testing::Values(Bundled{"one-robot/bar-slot.json", "one-robot/bar-slot.path.json"},
+                      Bundled{"two-robots/niche-swap.json", "two-robots/niche-swap.path.json"},
+                      Bundled{"translating/cup.json", "translating/cup.path.json"}),
+    [](const auto& info) { return std::to_string(info.index); });

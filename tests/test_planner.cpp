@@ -42,7 +42,8 @@ TEST_P(SolvableScene, SolvedWithCertifiedPathsForSeveralSeeds) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, SolvableScene,
-                         ::testing::Values("one-robot/bar-slot.json", "one-robot/corridor-corner.json",
+                         ::testing::Values("one-robot/bar-slot.json",
+                                           "one-robot/corridor-corner.json",
                                            "one-robot/bug-trap.json", "one-robot/maze.json"),
                          [](const auto& info) {
                            std::string n = info.param;
@@ -69,9 +70,10 @@ TEST(Plan, SameSeedSamePathFileDifferentSeedOtherwise) {
 TEST(Plan, SealedGoalEndsWithExitOneWithinTheTimeLimit) {
   TempDir dir;
   const auto t0 = std::chrono::steady_clock::now();
-  const Outcome r = runMms("plan " + quote(scenario("one-robot/sealed-ring.json")) + " --time-limit 2 -o " +
-                           quote(dir.path("p.json")));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const Outcome r = runMms("plan " + quote(scenario("one-robot/sealed-ring.json")) +
+                           " --time-limit 2 -o " + quote(dir.path("p.json")));
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(r.code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("no path found within 2 s"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("slices"), std::string::npos);  // says what was built
@@ -131,9 +133,9 @@ TEST(Plan, QueriesFileAnswersEachQueryOnOneRoadmap) {
   const std::string q = dir.file("q.json", R"({"format": "mms-queries/1", "queries": [
       {"start": [-2, 0, 1.5707963267948966], "goal": [7, 0, 1.5707963267948966]},
       {"start": [7, 0, 1.5707963267948966], "goal": [-7, -7, 0]}]})");
-  const Outcome r = runMms("plan " + quote(scenario("one-robot/bug-trap.json")) + " -q --queries " + quote(q) +
-                           " -o " + quote(dir.path("p.json")) + " --svg " + quote(dir.path("p.svg")) +
-                           " --svg-roadmap");
+  const Outcome r = runMms("plan " + quote(scenario("one-robot/bug-trap.json")) + " -q --queries " +
+                           quote(q) + " -o " + quote(dir.path("p.json")) + " --svg " +
+                           quote(dir.path("p.svg")) + " --svg-roadmap");
   EXPECT_EQ(r.code, 0) << r.out << r.err;
   for (const char* f : {"p.0.json", "p.1.json", "p.0.svg", "p.1.svg"})
     EXPECT_TRUE(std::filesystem::exists(dir.path(f))) << f;
@@ -148,7 +150,10 @@ TEST(Plan, BadQueriesFileExitsTwoNamingTheField) {
   TempDir dir;
   const std::string q = dir.file("q.json", R"({"format": "mms-queries/1", "queries": [
       {"start": [-2, 0, 1.5707963267948966], "goal": [3.2, 0, 1.5707963267948966]}]})");
-  const Outcome r = runMms("plan " + quote(scenario("one-robot/bug-trap.json")) + " --queries " + quote(q));
+  const Outcome r =
+      runMms("plan " + quote(scenario("one-robot/bug-trap.json")) + " --queries " + quote(q));
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("q.json: queries[0].goal: robot 'bar' collides with obstacles["), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("q.json: queries[0].goal: robot 'bar' collides with obstacles["),
+            std::string::npos)
+      << r.err;
 }

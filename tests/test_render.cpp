@@ -44,7 +44,7 @@ TEST(Render, CommandWritesAnSvgThatRsvgConvertRenders) {
   TempDir dir;
   const std::string svg = dir.path("out.svg"), png = dir.path("out.png");
   Outcome r = runMms("render " + quote(scenario("translating/cup.json")) + " " +
-              quote(scenario("translating/cup.path.json")) + " -o " + quote(svg));
+                     quote(scenario("translating/cup.path.json")) + " -o " + quote(svg));
   ASSERT_EQ(r.code, 0) << r.err;
   r = runCommand("rsvg-convert " + quote(svg) + " -o " + quote(png));
   ASSERT_EQ(r.code, 0) << "rsvg-convert (librsvg2-bin, installed by scripts/setup.sh): " << r.err;
@@ -56,7 +56,7 @@ TEST(Render, CommandWritesAnSvgThatRsvgConvertRenders) {
 TEST(Render, UnwritableOutputLeavesNoFileAndExitsTwo) {
   TempDir dir;
   const Outcome r = runMms("render " + quote(scenario("translating/cup.json")) + " -o " +
-                    quote(dir.path("no/such/dir/out.svg")));
+                           quote(dir.path("no/such/dir/out.svg")));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("out.svg: (output): cannot create"), std::string::npos) << r.err;
 }
@@ -65,7 +65,7 @@ TEST(Render, BadPathLeavesNoOutputFile) {
   TempDir dir;
   const std::string out = dir.path("out.svg");
   const Outcome r = runMms("render " + quote(scenario("translating/cup.json")) + " " +
-                    quote(dir.file("p.json", "{}")) + " -o " + quote(out));
+                           quote(dir.file("p.json", "{}")) + " -o " + quote(out));
   EXPECT_EQ(r.code, 2);
   EXPECT_FALSE(std::filesystem::exists(out));
 }

@@ -3,14 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "Support.h"
+#include "geometry/PolygonOps.h"
 #include "scene/Errors.h"
 #include "scene/PathIO.h"
 #include "scene/SceneIO.h"
-#include "geometry/PolygonOps.h"
-#include <functional>
 
 using nlohmann::json;
 using namespace mms;
@@ -28,11 +28,15 @@ json baseScene() {
           {"name", "base"},
           {"bounds", {0, 0, 10, 10}},
           {"obstacles", json::array({square(4, 4, 2)})},
-          {"robots",
-           json::array({{{"name", "a"}, {"shape", square(-0.5, -0.5, 1)}, {"start", {1, 1, 0}},
-                         {"goal", {9, 9, 0}}, {"motion", "rigid"}},
-                        {{"name", "b"}, {"shape", square(-0.5, -0.5, 1)}, {"start", {9, 1, 0}},
-                         {"goal", {1, 9, 1.0}}}})}};
+          {"robots", json::array({{{"name", "a"},
+                                   {"shape", square(-0.5, -0.5, 1)},
+                                   {"start", {1, 1, 0}},
+                                   {"goal", {9, 9, 0}},
+                                   {"motion", "rigid"}},
+                                  {{"name", "b"},
+                                   {"shape", square(-0.5, -0.5, 1)},
+                                   {"start", {9, 1, 0}},
+                                   {"goal", {1, 9, 1.0}}}})}};
 }
 
 struct BadCase {
@@ -45,9 +49,7 @@ struct BadCase {
 
 void PrintTo(const BadCase& c, std::ostream* os) { *os << c.label; }
 
-std::string deepJson(int depth) {
-  return std::string(depth, '[') + std::string(depth, ']');
-}
+std::string deepJson(int depth) { return std::string(depth, '[') + std::string(depth, ']'); }
 
 }  // namespace
 
@@ -86,35 +88,59 @@ INSTANTIATE_TEST_SUITE_P(
                 "unsupported format 'mms-scene/9'"},
         BadCase{"format_type", [](json& j) { j["format"] = 1; }, nullptr, "format",
                 "expected a string, found a number"},
-        BadCase{"unknown_field", [](json& j) { j["obstacle"] = json::array(); }, nullptr, "obstacle",
-                "unknown field"},
+        BadCase{"unknown_field", [](json& j) { j["obstacle"] = json::array(); }, nullptr,
+                "obstacle", "unknown field"},
         BadCase{"missing_bounds", [](json& j) { j.erase("bounds"); }, nullptr, "bounds", "missing"},
-        BadCase{"bounds_short", [](json& j) { j["bounds"] = {0, 0, 10}; }, nullptr, "bounds",
-                "expected 4 elements, found 3"},
+        BadCase{"bounds_short",
+                [](json& j) {
+                  j["bounds"] = {0, 0, 10};
+                },
+                nullptr, "bounds", "expected 4 elements, found 3"},
         BadCase{"bounds_type", [](json& j) { j["bounds"] = "big"; }, nullptr, "bounds",
                 "expected an array, found a string"},
         BadCase{"bounds_element_type", [](json& j) { j["bounds"][2] = true; }, nullptr, "bounds[2]",
                 "expected a number, found a boolean"},
-        BadCase{"bounds_inverted", [](json& j) { j["bounds"] = {10, 0, 0, 10}; }, nullptr, "bounds",
-                "inverted"},
-        BadCase{"bounds_empty", [](json& j) { j["bounds"] = {0, 5, 10, 5}; }, nullptr, "bounds",
-                "inverted or empty"},
+        BadCase{"bounds_inverted",
+                [](json& j) {
+                  j["bounds"] = {10, 0, 0, 10};
+                },
+                nullptr, "bounds", "inverted"},
+        BadCase{"bounds_empty",
+                [](json& j) {
+                  j["bounds"] = {0, 5, 10, 5};
+                },
+                nullptr, "bounds", "inverted or empty"},
         BadCase{"huge_number", [](json& j) { j["bounds"][2] = 1e300; }, nullptr, "bounds[2]",
                 "out of range"},
-        BadCase{"polygon_two_vertices", [](json& j) { j["obstacles"][0] = {{0, 0}, {1, 1}}; },
+        BadCase{"polygon_two_vertices",
+                [](json& j) {
+                  j["obstacles"][0] = {{0, 0}, {1, 1}};
+                },
                 nullptr, "obstacles[0]", "expected at least 3 elements, found 2"},
-        BadCase{"point_three_coords", [](json& j) { j["obstacles"][0][1] = {1, 1, 1}; }, nullptr,
-                "obstacles[0][1]", "expected 2 elements"},
-        BadCase{"zero_area", [](json& j) { j["obstacles"][0] = {{0, 0}, {1, 1}, {2, 2}, {3, 3}}; },
+        BadCase{"point_three_coords",
+                [](json& j) {
+                  j["obstacles"][0][1] = {1, 1, 1};
+                },
+                nullptr, "obstacles[0][1]", "expected 2 elements"},
+        BadCase{"zero_area",
+                [](json& j) {
+                  j["obstacles"][0] = {{0, 0}, {1, 1}, {2, 2}, {3, 3}};
+                },
                 nullptr, "obstacles[0]", "zero area"},
         BadCase{"repeated_vertex",
-                [](json& j) { j["obstacles"][0] = {{4, 4}, {6, 4}, {6, 6}, {6, 4}, {4, 6}}; },
+                [](json& j) {
+                  j["obstacles"][0] = {{4, 4}, {6, 4}, {6, 6}, {6, 4}, {4, 6}};
+                },
                 nullptr, "obstacles[0]", "repeated vertex (vertices 1 and 3 coincide)"},
         BadCase{"self_intersecting",
-                [](json& j) { j["robots"][0]["shape"] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}}; },
+                [](json& j) {
+                  j["robots"][0]["shape"] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+                },
                 nullptr, "robots[0].shape", "polygon self-intersects (edges 1 and 3)"},
         BadCase{"fold_back",
-                [](json& j) { j["obstacles"][0] = {{4, 4}, {6, 4}, {5, 4}, {5, 6}}; },
+                [](json& j) {
+                  j["obstacles"][0] = {{4, 4}, {6, 4}, {5, 4}, {5, 6}};
+                },
                 nullptr, "obstacles[0]", "self-intersects"},
         BadCase{"no_robots", [](json& j) { j["robots"] = json::array(); }, nullptr, "robots",
                 "expected at least 1 elements, found 0"},
@@ -122,20 +148,35 @@ INSTANTIATE_TEST_SUITE_P(
                 "expected an object, found a number"},
         BadCase{"missing_shape", [](json& j) { j["robots"][0].erase("shape"); }, nullptr,
                 "robots[0].shape", "missing"},
-        BadCase{"start_short", [](json& j) { j["robots"][0]["start"] = {1, 1}; }, nullptr,
-                "robots[0].start", "expected 3 elements, found 2"},
+        BadCase{"start_short",
+                [](json& j) {
+                  j["robots"][0]["start"] = {1, 1};
+                },
+                nullptr, "robots[0].start", "expected 3 elements, found 2"},
         BadCase{"huge_angle", [](json& j) { j["robots"][0]["goal"][2] = 1e9; }, nullptr,
                 "robots[0].goal[2]", "out of range"},
-        BadCase{"start_outside_bounds", [](json& j) { j["robots"][0]["start"] = {0.2, 1, 0}; },
+        BadCase{"start_outside_bounds",
+                [](json& j) {
+                  j["robots"][0]["start"] = {0.2, 1, 0};
+                },
                 nullptr, "robots[0].start", "robot 'a' is not inside the bounds"},
         BadCase{"robot_larger_than_bounds",
                 [](json& j) { j["robots"][0]["shape"] = square(-6, -6, 12); }, nullptr,
                 "robots[0].start", "not inside the bounds"},
-        BadCase{"start_in_obstacle", [](json& j) { j["robots"][0]["start"] = {4.2, 5, 0}; }, nullptr,
-                "robots[0].start", "robot 'a' collides with obstacles[0]"},
-        BadCase{"goal_in_obstacle", [](json& j) { j["robots"][1]["goal"] = {5, 6.3, 0.3}; }, nullptr,
-                "robots[1].goal", "robot 'b' collides with obstacles[0]"},
-        BadCase{"robots_overlap_at_goal", [](json& j) { j["robots"][1]["goal"] = {8.5, 8.6, 0}; },
+        BadCase{"start_in_obstacle",
+                [](json& j) {
+                  j["robots"][0]["start"] = {4.2, 5, 0};
+                },
+                nullptr, "robots[0].start", "robot 'a' collides with obstacles[0]"},
+        BadCase{"goal_in_obstacle",
+                [](json& j) {
+                  j["robots"][1]["goal"] = {5, 6.3, 0.3};
+                },
+                nullptr, "robots[1].goal", "robot 'b' collides with obstacles[0]"},
+        BadCase{"robots_overlap_at_goal",
+                [](json& j) {
+                  j["robots"][1]["goal"] = {8.5, 8.6, 0};
+                },
                 nullptr, "robots[1].goal", "robot 'b' collides with robot 'a'"},
         BadCase{"duplicate_names", [](json& j) { j["robots"][1]["name"] = "a"; }, nullptr,
                 "robots[1].name", "duplicate robot name 'a'"},
@@ -168,7 +209,8 @@ TEST(BadSceneText, DeepNestingAndOverflow) {
     const Outcome r = runMms("validate " + quote(f));
     EXPECT_EQ(r.code, 2);
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
-    EXPECT_NE(r.err.find("not valid JSON: number overflow parsing '1e999'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("not valid JSON: number overflow parsing '1e999'"), std::string::npos)
+        << r.err;
   }
 }
 
@@ -176,7 +218,8 @@ TEST(BadSceneText, UnreadableFiles) {
   TempDir dir;
   Outcome r = runMms("validate " + quote(dir.path("missing.json")));
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("missing.json: (file): cannot open for reading"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("missing.json: (file): cannot open for reading"), std::string::npos)
+      << r.err;
   r = runMms("validate " + quote(dir.path("")));  // a directory
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
@@ -210,7 +253,8 @@ TEST(SceneLoad, RoundTripsThroughSave) {
 }
 
 TEST(ValidateCommand, PrintsSummaryForBundledScenes) {
-  for (const char* s : {"one-robot/bar-slot.json", "two-robots/niche-swap.json", "translating/cup.json"}) {
+  for (const char* s :
+       {"one-robot/bar-slot.json", "two-robots/niche-swap.json", "translating/cup.json"}) {
     const Outcome r = runMms("validate " + quote(scenario(s)));
     EXPECT_EQ(r.code, 0) << s << ": " << r.err;
     EXPECT_NE(r.out.find("valid mms-scene/1 scene"), std::string::npos) << r.out;
@@ -224,7 +268,9 @@ class BadPath : public ::testing::Test {
   TempDir dir;
   std::string scene = scenario("two-robots/niche-swap.json");
   json base = json::parse(readFile(scenario("two-robots/niche-swap.path.json")));
-  Outcome check(const json& path) { return runMms("check " + quote(scene) + " " + quote(dir.file("p.json", path.dump()))); }
+  Outcome check(const json& path) {
+    return runMms("check " + quote(scene) + " " + quote(dir.file("p.json", path.dump())));
+  }
   void expectBad(const json& path, const std::string& where, const std::string& problem) {
     const Outcome r = check(path);
     EXPECT_EQ(r.code, 2) << r.err << r.out;
@@ -283,7 +329,8 @@ TEST(Cli, UsageErrorsExitTwoWithOneLine) {
   }
   const Outcome help = runMms("--help");
   EXPECT_EQ(help.code, 0);
-  for (const char* c : {"validate", "check", "render"}) EXPECT_NE(help.out.find(c), std::string::npos);
+  for (const char* c : {"validate", "check", "render"})
+    EXPECT_NE(help.out.find(c), std::string::npos);
   const Outcome sub = runMms("check --help");
   EXPECT_EQ(sub.code, 0);
   EXPECT_NE(sub.out.find("--max-evaluations"), std::string::npos);

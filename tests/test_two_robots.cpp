@@ -60,13 +60,15 @@ TEST_P(TwoRobotScene, SolvedWithCertifiedPathsMovingOneRobotAtATime) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Paper, TwoRobotScene,
-    ::testing::Values(TwoRobotCase{"two-robots/viking-helmet.json", 3}, TwoRobotCase{"two-robots/pacman-0.json", 2},
-                      TwoRobotCase{"two-robots/pacman-0.5.json", 2}, TwoRobotCase{"two-robots/pacman-0.9.json", 2},
-                      TwoRobotCase{"two-robots/random-polygons.json", 1},
-                      TwoRobotCase{"two-robots/niche-swap.json", 2}, TwoRobotCase{"translating/cup.json", 2}),
-    [](const auto& info) { return label(info.param.scene); });
+INSTANTIATE_TEST_SUITE_P(Paper, TwoRobotScene,
+                         ::testing::Values(TwoRobotCase{"two-robots/viking-helmet.json", 3},
+                                           TwoRobotCase{"two-robots/pacman-0.json", 2},
+                                           TwoRobotCase{"two-robots/pacman-0.5.json", 2},
+                                           TwoRobotCase{"two-robots/pacman-0.9.json", 2},
+                                           TwoRobotCase{"two-robots/random-polygons.json", 1},
+                                           TwoRobotCase{"two-robots/niche-swap.json", 2},
+                                           TwoRobotCase{"translating/cup.json", 2}),
+                         [](const auto& info) { return label(info.param.scene); });
 
 TEST(TwoRobots, SameSeedSamePath) {
   const Scene s = loadScene(scenario("two-robots/pacman-0.5.json"));
@@ -78,7 +80,8 @@ TEST(TwoRobots, SameSeedSamePath) {
 TEST(TwoRobots, PlanCommandWritesACertifiedPath) {
   TempDir dir;
   const std::string scene = quote(scenario("two-robots/viking-helmet.json"));
-  const Outcome r = runMms("plan " + scene + " -q -o " + quote(dir.path("p.json")) + " --svg " + quote(dir.path("p.svg")));
+  const Outcome r = runMms("plan " + scene + " -q -o " + quote(dir.path("p.json")) + " --svg " +
+                           quote(dir.path("p.svg")));
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("subspaces"), std::string::npos);
   EXPECT_EQ(runMms("check " + scene + " " + quote(dir.path("p.json"))).code, 0);
@@ -91,9 +94,12 @@ TEST(Scenarios, BundledFilesMatchTheGenerator) {
     const char* args;
     const char* file;
   };
-  for (const Gen& g : {Gen{"pacman --tightness 0", "pacman-0.json"}, Gen{"pacman --tightness 0.5", "pacman-0.5.json"},
-                       Gen{"pacman --tightness 0.8", "pacman-0.8.json"}, Gen{"pacman --tightness 0.9", "pacman-0.9.json"},
-                       Gen{"viking-helmet", "viking-helmet.json"}, Gen{"random-polygons --seed 1", "random-polygons.json"}}) {
+  for (const Gen& g : {Gen{"pacman --tightness 0", "pacman-0.json"},
+                       Gen{"pacman --tightness 0.5", "pacman-0.5.json"},
+                       Gen{"pacman --tightness 0.8", "pacman-0.8.json"},
+                       Gen{"pacman --tightness 0.9", "pacman-0.9.json"},
+                       Gen{"viking-helmet", "viking-helmet.json"},
+                       Gen{"random-polygons --seed 1", "random-polygons.json"}}) {
     const std::string out = dir.path(g.file);
     ASSERT_EQ(runMms(std::string("scenario ") + g.args + " -o " + quote(out)).code, 0) << g.args;
     EXPECT_EQ(readFile(out), readFile(scenario(std::string("two-robots/") + g.file))) << g.file;

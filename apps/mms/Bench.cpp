@@ -1,10 +1,10 @@
 // mms bench: planners x scenes x seeds, each run in its own process under a time and a memory
 // limit, results appended to runs.jsonl as they come (an interrupted benchmark keeps its data
 // and resumes), reports made from all runs of a folder.
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -55,7 +55,7 @@ pid_t start(const std::string& exe, const Job& job, double memoryMb) {
   const pid_t pid = fork();
   if (pid != 0) return pid;
   const rlim_t bytes = rlim_t(memoryMb * 1024 * 1024);
-  const struct rlimit lim{bytes, bytes};
+  const struct rlimit lim { bytes, bytes };
   setrlimit(RLIMIT_AS, &lim);
   const int null = open("/dev/null", O_WRONLY);
   dup2(null, 1);
@@ -102,19 +102,24 @@ void writeReports(const std::string& dir) {
   std::vector<Summary> swept, fixed;
   for (const Summary& s : summaries) (s.tightness >= 0 ? swept : fixed).push_back(s);
   std::string md = "# mms bench results\n\n" + std::to_string(unique.size()) +
-                   " runs. Times are planning times as each planner measures them; mean and stdev over solved runs "
-                   "without the fastest and the slowest, median over all runs (an unsolved run counts as infinite).\n\n";
+                   " runs. Times are planning times as each planner measures them; mean and stdev "
+                   "over solved runs "
+                   "without the fastest and the slowest, median over all runs (an unsolved run "
+                   "counts as infinite).\n\n";
   md += markdownReport(fixed, "");
   if (!swept.empty()) {
-    md += "\n## Tightness sweep\n\n" + markdownReport(swept, "") + "\n![time vs tightness](tightness.svg)\n";
-    writeFileAtomically(dir + "/tightness.svg", tightnessPlot(swept, "Pacman: planning time vs tightness"));
+    md += "\n## Tightness sweep\n\n" + markdownReport(swept, "") +
+          "\n![time vs tightness](tightness.svg)\n";
+    writeFileAtomically(dir + "/tightness.svg",
+                        tightnessPlot(swept, "Pacman: planning time vs tightness"));
   }
   writeFileAtomically(dir + "/report.md", md);
   writeFileAtomically(dir + "/results.csv", csvReport(unique));
   fs::create_directories(dir + "/ompl");
   char host[256] = "unknown";
   gethostname(host, sizeof host - 1);
-  for (const auto& [scene, log] : omplLogs(unique, host)) writeFileAtomically(dir + "/ompl/" + scene + ".log", log);
+  for (const auto& [scene, log] : omplLogs(unique, host))
+    writeFileAtomically(dir + "/ompl/" + scene + ".log", log);
 }
 
 }  // namespace
@@ -150,7 +155,8 @@ int bench(const BenchArgs& a) {
       } catch (const std::exception&) {
         throw InputError("--sweep-pacman: '" + t + "' is not a number");
       }
-      if (!(tight >= 0 && tight < 1)) throw InputError("--sweep-pacman: tightness " + t + " is not in [0, 1)");
+      if (!(tight >= 0 && tight < 1))
+        throw InputError("--sweep-pacman: tightness " + t + " is not in [0, 1)");
       const Scene s = pacmanScene(tight);
       const std::string file = a.output + "/scenes/" + s.name + ".json";
       saveScene(s, file);
@@ -164,7 +170,8 @@ int bench(const BenchArgs& a) {
   std::map<std::string, std::string> params;  // planner -> extra mms plan arguments
   for (const std::string& p : a.params) {
     const size_t eq = p.find('=');
-    if (eq == std::string::npos || eq == 0) throw InputError("--param: expected PLANNER=ARGS, found '" + p + "'");
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--param: expected PLANNER=ARGS, found '" + p + "'");
     params[p.substr(0, eq)] = p.substr(eq + 1);
   }
 
@@ -183,8 +190,15 @@ int bench(const BenchArgs& a) {
         j.record.seed = seed;
         j.record.timeLimit = a.timeLimit;
         j.record.memoryLimitMb = a.memoryMb;
-        j.args = {"plan", s.file, "--planner", planner, "--seed", std::to_string(seed), "--time-limit",
-                  std::to_string(a.timeLimit), "-q"};
+        j.args = {"plan",
+                  s.file,
+                  "--planner",
+                  planner,
+                  "--seed",
+                  std::to_string(seed),
+                  "--time-limit",
+                  std::to_string(a.timeLimit),
+                  "-q"};
         for (const std::string& extra : split(j.record.parameters, ' ')) j.args.push_back(extra);
         jobs.push_back(std::move(j));
       }
@@ -220,7 +234,8 @@ int bench(const BenchArgs& a) {
         ++skipped;
         continue;
       }
-      Running r{job, 0, std::chrono::steady_clock::now(), tmp + "/run-" + std::to_string(next) + ".json"};
+      Running r{job, 0, std::chrono::steady_clock::now(),
+                tmp + "/run-" + std::to_string(next) + ".json"};
       fs::remove(r.stats);
       r.job.args.push_back("--stats-json");
       r.job.args.push_back(r.stats);
@@ -234,7 +249,8 @@ int bench(const BenchArgs& a) {
       int status = 0;
       struct rusage usage {};
       const pid_t got = wait4(r.pid, &status, WNOHANG, &usage);
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.started).count();
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - r.started).count();
       if (got == 0 && elapsed > a.timeLimit + grace) {
         kill(r.pid, SIGKILL);
         continue;  // reaped on a later pass
@@ -244,18 +260,22 @@ int bench(const BenchArgs& a) {
       rec.wallSeconds = elapsed;
       rec.peakMemoryMb = usage.ru_maxrss / 1024.0;
       rec.status = "crashed";
-      if (WIFSIGNALED(status)) rec.detail = WTERMSIG(status) == SIGKILL ? "killed after the time limit" : "signal " + std::to_string(WTERMSIG(status));
+      if (WIFSIGNALED(status))
+        rec.detail = WTERMSIG(status) == SIGKILL ? "killed after the time limit"
+                                                 : "signal " + std::to_string(WTERMSIG(status));
       if (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) rec.status = "killed";
       if (WIFEXITED(status)) {
         fillFromStats(rec, r.stats);
-        if (WEXITSTATUS(status) == 3) rec.status = "crashed", rec.detail = "internal error or out of memory";
+        if (WEXITSTATUS(status) == 3)
+          rec.status = "crashed", rec.detail = "internal error or out of memory";
       }
-      if (rec.status == "not_found" || rec.status == "killed" || rec.status == "crashed") rec.seconds = std::max(rec.seconds, 0.0);
+      if (rec.status == "not_found" || rec.status == "killed" || rec.status == "crashed")
+        rec.seconds = std::max(rec.seconds, 0.0);
       out << rec.toJson().dump() << "\n" << std::flush;
       ++finished;
-      std::fprintf(stderr, "mms bench: [%zu/%zu] %s %s seed %llu: %s %.3f s\n", finished + skipped, total,
-                   rec.scene.c_str(), rec.planner.c_str(), (unsigned long long)rec.seed, rec.status.c_str(),
-                   rec.seconds);
+      std::fprintf(stderr, "mms bench: [%zu/%zu] %s %s seed %llu: %s %.3f s\n", finished + skipped,
+                   total, rec.scene.c_str(), rec.planner.c_str(), (unsigned long long)rec.seed,
+                   rec.status.c_str(), rec.seconds);
       fs::remove(r.stats);
       running.erase(running.begin() + long(i));
       reaped = true;
@@ -266,14 +286,14 @@ int bench(const BenchArgs& a) {
   if (interrupted) {
     for (Running& r : running) kill(r.pid, SIGKILL);
     for (Running& r : running) waitpid(r.pid, nullptr, 0);
-    std::fprintf(stderr, "mms bench: interrupted; %zu runs recorded in %s (run again to resume)\n", finished,
-                 runsFile.c_str());
+    std::fprintf(stderr, "mms bench: interrupted; %zu runs recorded in %s (run again to resume)\n",
+                 finished, runsFile.c_str());
     return 130;
   }
   fs::remove_all(tmp);
   writeReports(a.output);
-  std::printf("%s: %zu runs (%zu already recorded); report in %s/report.md\n", a.output.c_str(), finished, skipped,
-              a.output.c_str());
+  std::printf("%s: %zu runs (%zu already recorded); report in %s/report.md\n", a.output.c_str(),
+              finished, skipped, a.output.c_str());
   return 0;
 }
 

@@ -4,10 +4,9 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "scene/Errors.h"
-
 #include "check/PathChecker.h"
 #include "render/SvgRenderer.h"
+#include "scene/Errors.h"
 #include "scene/Generators.h"
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
@@ -29,14 +28,14 @@ int validate(const ValidateArgs& a) {
   if (a.quiet) return 0;
   size_t vertices = 0;
   for (const Ring& o : s.obstacles) vertices += o.size();
-  std::printf("%s: valid %s scene%s%s\n", a.scene.c_str(), kSceneFormat,
-              s.name.empty() ? "" : " '", s.name.empty() ? "" : (s.name + "'").c_str());
+  std::printf("%s: valid %s scene%s%s\n", a.scene.c_str(), kSceneFormat, s.name.empty() ? "" : " '",
+              s.name.empty() ? "" : (s.name + "'").c_str());
   std::printf("  bounds [%g, %g] x [%g, %g], %zu obstacles (%zu vertices), contact tolerance %g\n",
               s.bounds.xmin, s.bounds.xmax, s.bounds.ymin, s.bounds.ymax, s.obstacles.size(),
               vertices, s.tolerance());
   for (const Robot& r : s.robots)
-    std::printf("  robot '%s': %zu vertices, %s, start %s, goal %s\n", r.name.c_str(), r.shape.size(),
-                motionName(r.motion), pose(r.start).c_str(), pose(r.goal).c_str());
+    std::printf("  robot '%s': %zu vertices, %s, start %s, goal %s\n", r.name.c_str(),
+                r.shape.size(), motionName(r.motion), pose(r.start).c_str(), pose(r.goal).c_str());
   return 0;
 }
 
@@ -50,7 +49,8 @@ int check(const CheckArgs& a) {
   const size_t segments = path.waypoints.size() - 1;
   if (!r.ok) {
     std::printf("%s: rejected: segment %zu (waypoint %zu to %zu) at s = %.6g: %s\n", a.path.c_str(),
-                r.segment, r.segment, std::min(r.segment + 1, segments), r.parameter, r.reason.c_str());
+                r.segment, r.segment, std::min(r.segment + 1, segments), r.parameter,
+                r.reason.c_str());
     return 1;
   }
   std::printf("%s: certified collision-free (%zu waypoints, %zu segments, %zu poses checked)\n",
@@ -77,9 +77,12 @@ int render(const RenderArgs& a) {
 
 int scenario(const ScenarioArgs& a) {
   Scene s;
-  if (a.name == "pacman") s = pacmanScene(a.tightness);
-  else if (a.name == "viking-helmet") s = vikingHelmetScene();
-  else s = randomPolygonsTwoRobots(a.seed);
+  if (a.name == "pacman")
+    s = pacmanScene(a.tightness);
+  else if (a.name == "viking-helmet")
+    s = vikingHelmetScene();
+  else
+    s = randomPolygonsTwoRobots(a.seed);
   // The generators must produce valid scenes: validate before writing.
   try {
     parseScene(sceneToJson(s), a.name);

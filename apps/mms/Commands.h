@@ -42,7 +42,7 @@ struct PlanArgs {
   bool svgRoadmap = false;  // draw line points and the path's slice cells
   std::string queries;      // mms-queries/1 file: several queries on one roadmap
   std::string planner = "mms";
-  std::string statsJson;    // write a machine-readable summary of the run here
+  std::string statsJson;  // write a machine-readable summary of the run here
   double resolution = 0.002, range = 0, segmentFactor = 10;
   unsigned neighbours = 0;
   bool simplify = false;

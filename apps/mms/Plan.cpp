@@ -16,15 +16,19 @@ namespace mms::cli {
 namespace {
 
 void printStats(const MmsStats& s) {
-  std::printf("  manifolds: %zu slices (%zu cells), %zu lines (%zu arcs); graph %zu nodes, %zu edges; %zu rounds\n",
-              s.manifolds.slices, s.manifolds.sliceCells, s.manifolds.lines, s.manifolds.lineArcs, s.graphNodes,
-              s.graphEdges, s.rounds);
-  std::printf("  time: %.3f s total = slices %.3f + lines %.3f + connect %.3f + search %.3f + motion %.3f + "
-              "shortcut/certify %.3f\n",
-              s.totalSeconds, s.manifolds.sliceSeconds, s.manifolds.lineSeconds, s.manifolds.connectSeconds,
-              s.searchSeconds,
-              s.motionSeconds, s.certifySeconds);
-  if (s.rejectedPaths) std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
+  std::printf(
+      "  manifolds: %zu slices (%zu cells), %zu lines (%zu arcs); graph %zu nodes, %zu edges; %zu "
+      "rounds\n",
+      s.manifolds.slices, s.manifolds.sliceCells, s.manifolds.lines, s.manifolds.lineArcs,
+      s.graphNodes, s.graphEdges, s.rounds);
+  std::printf(
+      "  time: %.3f s total = slices %.3f + lines %.3f + connect %.3f + search %.3f + motion %.3f "
+      "+ "
+      "shortcut/certify %.3f\n",
+      s.totalSeconds, s.manifolds.sliceSeconds, s.manifolds.lineSeconds, s.manifolds.connectSeconds,
+      s.searchSeconds, s.motionSeconds, s.certifySeconds);
+  if (s.rejectedPaths)
+    std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
 }
 
 struct Query {
@@ -38,7 +42,8 @@ std::vector<Query> loadQueries(const std::string& file, const Scene& scene) {
   const Node root(doc, file, "");
   root.allowOnly({"format", "queries"});
   if (root["format"].string() != "mms-queries/1")
-    root["format"].fail("unsupported format '" + root["format"].string() + "' (expected mms-queries/1)");
+    root["format"].fail("unsupported format '" + root["format"].string() +
+                        "' (expected mms-queries/1)");
   const Node qs = root["queries"];
   const size_t n = qs.arraySize(1, 100000);
   const CollisionChecker checker(scene);
@@ -51,11 +56,14 @@ std::vector<Query> loadQueries(const std::string& file, const Scene& scene) {
     for (int e = 0; e < 2; ++e) {
       const Node p = qs[i][names[e]];
       p.arraySize(3, 3);
-      *ends[e] = {p[size_t(0)].number(json_in::kMaxCoordinate), p[size_t(1)].number(json_in::kMaxCoordinate),
+      *ends[e] = {p[size_t(0)].number(json_in::kMaxCoordinate),
+                  p[size_t(1)].number(json_in::kMaxCoordinate),
                   p[size_t(2)].number(json_in::kMaxAngle)};
       const Contact c = checker.robotContact(0, *ends[e]);
-      if (c.kind != Contact::Kind::None) p.fail("robot '" + scene.robots[0].name + "' collides with " + c.describe(scene));
-      if (scene.robots[0].motion == Motion::Translate && ends[e]->theta != scene.robots[0].start.theta)
+      if (c.kind != Contact::Kind::None)
+        p.fail("robot '" + scene.robots[0].name + "' collides with " + c.describe(scene));
+      if (scene.robots[0].motion == Motion::Translate &&
+          ends[e]->theta != scene.robots[0].start.theta)
         p.fail("a translate robot keeps its angle " + std::to_string(scene.robots[0].start.theta));
     }
     out.push_back(q);
@@ -66,7 +74,8 @@ std::vector<Query> loadQueries(const std::string& file, const Scene& scene) {
 // "out.json" -> "out.3.json" for query 3.
 std::string numbered(const std::string& path, size_t i) {
   const std::filesystem::path p(path);
-  return (p.parent_path() / (p.stem().string() + "." + std::to_string(i) + p.extension().string())).string();
+  return (p.parent_path() / (p.stem().string() + "." + std::to_string(i) + p.extension().string()))
+      .string();
 }
 
 }  // namespace
@@ -78,8 +87,8 @@ void writeStats(const PlanArgs& a, const nlohmann::json& j) {
 }
 
 nlohmann::json runSummary(const PlanArgs& a, const char* status, double seconds) {
-  return {{"scene", a.scene}, {"planner", a.planner}, {"seed", a.seed}, {"status", status}, {"seconds", seconds},
-          {"time_limit", a.timeLimit}};
+  return {{"scene", a.scene}, {"planner", a.planner}, {"seed", a.seed},
+          {"status", status}, {"seconds", seconds},   {"time_limit", a.timeLimit}};
 }
 
 void addPath(nlohmann::json& j, const PathCheckResult& c, size_t waypoints) {
@@ -90,7 +99,8 @@ void addPath(nlohmann::json& j, const PathCheckResult& c, size_t waypoints) {
 }
 
 int planOmpl(const PlanArgs& a, const Scene& scene) {
-  if (!a.queries.empty()) throw InputError(a.queries + ": (file): --queries is for the mms planner");
+  if (!a.queries.empty())
+    throw InputError(a.queries + ": (file): --queries is for the mms planner");
   OmplSettings s;
   s.planner = a.planner;
   s.seed = a.seed;
@@ -103,60 +113,75 @@ int planOmpl(const PlanArgs& a, const Scene& scene) {
   s.keepUntilExit = true;  // under ASan, free everything so leaks stay visible
 #endif
   const OmplResult r = planWithOmpl(scene, s, Termination(a.timeLimit));
-  const char* status = r.status == OmplResult::Status::Found ? "found"
-                       : r.status == OmplResult::Status::Uncertified ? "uncertified" : "not_found";
+  const char* status = r.status == OmplResult::Status::Found         ? "found"
+                       : r.status == OmplResult::Status::Uncertified ? "uncertified"
+                                                                     : "not_found";
   nlohmann::json j = runSummary(a, status, r.seconds);
   j["graph_states"] = r.states;
-  j["parameters"] = {{"resolution", s.resolution}, {"range", s.range}, {"k", s.neighbours},
-                     {"segment_factor", s.segmentFactor}, {"simplify", s.simplify}};
+  j["parameters"] = {{"resolution", s.resolution},
+                     {"range", s.range},
+                     {"k", s.neighbours},
+                     {"segment_factor", s.segmentFactor},
+                     {"simplify", s.simplify}};
   if (r.status == OmplResult::Status::Uncertified) {
-    std::printf("%s: %s returned a path in %.3f s that fails the continuous check: segment %zu at s = %.4g: %s "
-                "(counted as a failure)\n",
-                a.scene.c_str(), a.planner.c_str(), r.seconds, r.certificate.segment, r.certificate.parameter,
-                r.certificate.reason.c_str());
+    std::printf(
+        "%s: %s returned a path in %.3f s that fails the continuous check: segment %zu at s = "
+        "%.4g: %s "
+        "(counted as a failure)\n",
+        a.scene.c_str(), a.planner.c_str(), r.seconds, r.certificate.segment,
+        r.certificate.parameter, r.certificate.reason.c_str());
     j["rejection"] = r.certificate.reason;
     writeStats(a, j);
     return 1;
   }
   if (r.status == OmplResult::Status::NotFound) {
     if (r.states)
-      std::printf("%s: %s found no path within %.3g s (%zu states)\n", a.scene.c_str(), a.planner.c_str(), a.timeLimit,
-                  r.states);
+      std::printf("%s: %s found no path within %.3g s (%zu states)\n", a.scene.c_str(),
+                  a.planner.c_str(), a.timeLimit, r.states);
     else
-      std::printf("%s: %s found no path within %.3g s\n", a.scene.c_str(), a.planner.c_str(), a.timeLimit);
+      std::printf("%s: %s found no path within %.3g s\n", a.scene.c_str(), a.planner.c_str(),
+                  a.timeLimit);
     writeStats(a, j);
     return 1;
   }
   Path path;
   path.waypoints = r.waypoints;
-  path.extra = {{"planner", a.planner}, {"seed", a.seed}, {"statistics", {{"graph_states", r.states}}}};
+  path.extra = {
+      {"planner", a.planner}, {"seed", a.seed}, {"statistics", {{"graph_states", r.states}}}};
   if (!a.output.empty()) savePath(path, scene, a.output);
   if (!a.svg.empty()) writeFileAtomically(a.svg, renderSvg(scene, &path));
   addPath(j, r.certificate, path.waypoints.size());
   writeStats(a, j);
-  std::printf("%s: %s found a path in %.3f s, certified: %zu waypoints, translation %.4g, rotation %.4g rad, min "
-              "clearance %.3g; %zu states\n",
-              a.scene.c_str(), a.planner.c_str(), r.seconds, path.waypoints.size(), r.certificate.translation,
-              r.certificate.rotation, r.certificate.minClearance, r.states);
+  std::printf(
+      "%s: %s found a path in %.3f s, certified: %zu waypoints, translation %.4g, rotation %.4g "
+      "rad, min "
+      "clearance %.3g; %zu states\n",
+      a.scene.c_str(), a.planner.c_str(), r.seconds, path.waypoints.size(),
+      r.certificate.translation, r.certificate.rotation, r.certificate.minClearance, r.states);
   return 0;
 }
 
 void printTwoRobotStats(const TwoRobotStats& s) {
   const SubspaceStats& m = s.manifolds;
-  std::printf("  manifolds: %zu subspaces (%zu + %zu fixings), %zu slices (%zu cells), %zu lines (%zu arcs); "
-              "graph %zu nodes, %zu edges (%zu between subspaces); %zu rounds\n",
-              s.subspaces, s.fixings[0], s.fixings[1], m.slices, m.sliceCells, m.lines, m.lineArcs, s.graphNodes,
-              s.graphEdges, s.crossEdges, s.rounds);
-  std::printf("  time: %.3f s total = base slices %.3f + overlays %.3f + lines %.3f + connect %.3f + "
-              "cross %.3f + search %.3f + motion %.3f + shortcut/certify %.3f\n",
-              s.totalSeconds, s.baseSliceSeconds, m.sliceSeconds, m.lineSeconds, m.connectSeconds,
-              s.crossSeconds, s.searchSeconds, s.motionSeconds, s.certifySeconds);
-  if (s.rejectedPaths) std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
+  std::printf(
+      "  manifolds: %zu subspaces (%zu + %zu fixings), %zu slices (%zu cells), %zu lines (%zu "
+      "arcs); "
+      "graph %zu nodes, %zu edges (%zu between subspaces); %zu rounds\n",
+      s.subspaces, s.fixings[0], s.fixings[1], m.slices, m.sliceCells, m.lines, m.lineArcs,
+      s.graphNodes, s.graphEdges, s.crossEdges, s.rounds);
+  std::printf(
+      "  time: %.3f s total = base slices %.3f + overlays %.3f + lines %.3f + connect %.3f + "
+      "cross %.3f + search %.3f + motion %.3f + shortcut/certify %.3f\n",
+      s.totalSeconds, s.baseSliceSeconds, m.sliceSeconds, m.lineSeconds, m.connectSeconds,
+      s.crossSeconds, s.searchSeconds, s.motionSeconds, s.certifySeconds);
+  if (s.rejectedPaths)
+    std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
 }
 
 int planTwo(const PlanArgs& a, const Scene& scene) {
   if (!a.queries.empty())
-    throw InputError(a.queries + ": (file): --queries is for one-robot scenes; " + a.scene + " has two robots");
+    throw InputError(a.queries + ": (file): --queries is for one-robot scenes; " + a.scene +
+                     " has two robots");
   TwoRobotSettings settings;
   settings.seed = a.seed;
   if (a.nTheta) settings.nTheta = a.nTheta;
@@ -166,22 +191,28 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
   Stopwatch clock;
   auto progress = [&](const TwoRobotStats& s) {
     if (a.quiet || clock.seconds() < 1.0) return;
-    std::fprintf(stderr, "mms plan: %.1f s, round %zu: %zu subspaces, %zu slices, %zu lines, graph %zu nodes / %zu edges\n",
-                 clock.seconds(), s.rounds, s.subspaces, s.manifolds.slices, s.manifolds.lines, s.graphNodes,
-                 s.graphEdges);
+    std::fprintf(stderr,
+                 "mms plan: %.1f s, round %zu: %zu subspaces, %zu slices, %zu lines, graph %zu "
+                 "nodes / %zu edges\n",
+                 clock.seconds(), s.rounds, s.subspaces, s.manifolds.slices, s.manifolds.lines,
+                 s.graphNodes, s.graphEdges);
   };
   const TwoRobotResult res = planner.solve(Termination(a.timeLimit), progress);
-  nlohmann::json j = runSummary(a, res.status == MmsResult::Status::Found ? "found" : "not_found", res.stats.totalSeconds);
+  nlohmann::json j = runSummary(a, res.status == MmsResult::Status::Found ? "found" : "not_found",
+                                res.stats.totalSeconds);
   const TwoRobotStats& ts = res.stats;
   j["graph_nodes"] = ts.graphNodes;
   j["graph_edges"] = ts.graphEdges;
-  j["parameters"] = {{"n_theta", settings.nTheta}, {"n_lines", settings.nLines}, {"n_fixings", settings.nFixings}};
-  j["manifolds"] = {{"subspaces", ts.subspaces}, {"slices", ts.manifolds.slices}, {"lines", ts.manifolds.lines},
+  j["parameters"] = {
+      {"n_theta", settings.nTheta}, {"n_lines", settings.nLines}, {"n_fixings", settings.nFixings}};
+  j["manifolds"] = {{"subspaces", ts.subspaces},
+                    {"slices", ts.manifolds.slices},
+                    {"lines", ts.manifolds.lines},
                     {"path_cells", ts.pathCells}};
   j["phases"] = {{"base_slices", ts.baseSliceSeconds}, {"overlays", ts.manifolds.sliceSeconds},
-                 {"lines", ts.manifolds.lineSeconds}, {"connect", ts.manifolds.connectSeconds},
-                 {"cross", ts.crossSeconds}, {"search", ts.searchSeconds}, {"motion", ts.motionSeconds},
-                 {"certify", ts.certifySeconds}};
+                 {"lines", ts.manifolds.lineSeconds},  {"connect", ts.manifolds.connectSeconds},
+                 {"cross", ts.crossSeconds},           {"search", ts.searchSeconds},
+                 {"motion", ts.motionSeconds},         {"certify", ts.certifySeconds}};
   if (res.status == MmsResult::Status::Found) addPath(j, res.certificate, res.waypoints.size());
   writeStats(a, j);
   if (res.status != MmsResult::Status::Found) {
@@ -195,7 +226,10 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
   const TwoRobotStats& st = res.stats;
   path.extra = {{"planner", "mms"},
                 {"seed", a.seed},
-                {"parameters", {{"n_theta", settings.nTheta}, {"n_lines", settings.nLines}, {"n_fixings", settings.nFixings}}},
+                {"parameters",
+                 {{"n_theta", settings.nTheta},
+                  {"n_lines", settings.nLines},
+                  {"n_fixings", settings.nFixings}}},
                 {"statistics",
                  {{"subspaces", st.subspaces},
                   {"slices", st.manifolds.slices},
@@ -205,9 +239,11 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
                   {"path_cells", st.pathCells}}}};
   if (!a.output.empty()) savePath(path, scene, a.output);
   if (!a.svg.empty()) writeFileAtomically(a.svg, renderSvg(scene, &path));
-  std::printf("%s: path found and certified: %zu waypoints, translation %.4g, rotation %.4g rad, min clearance %.3g\n",
-              a.scene.c_str(), path.waypoints.size(), res.certificate.translation, res.certificate.rotation,
-              res.certificate.minClearance);
+  std::printf(
+      "%s: path found and certified: %zu waypoints, translation %.4g, rotation %.4g rad, min "
+      "clearance %.3g\n",
+      a.scene.c_str(), path.waypoints.size(), res.certificate.translation, res.certificate.rotation,
+      res.certificate.minClearance);
   printTwoRobotStats(st);
   return 0;
 }
@@ -236,23 +272,33 @@ int plan(const PlanArgs& a) {
     Scene queryScene = scene;
     queryScene.robots[0].start = q.start;
     queryScene.robots[0].goal = q.goal;
-    const std::string label = a.queries.empty() ? a.scene : a.queries + " query " + std::to_string(qi);
+    const std::string label =
+        a.queries.empty() ? a.scene : a.queries + " query " + std::to_string(qi);
     Stopwatch clock;
     auto progress = [&](const MmsStats& s) {
       if (a.quiet || clock.seconds() < 1.0) return;
-      std::fprintf(stderr, "mms plan: %.1f s, round %zu: %zu slices, %zu lines, graph %zu nodes / %zu edges\n",
-                   clock.seconds(), s.rounds, s.manifolds.slices, s.manifolds.lines, s.graphNodes, s.graphEdges);
+      std::fprintf(
+          stderr,
+          "mms plan: %.1f s, round %zu: %zu slices, %zu lines, graph %zu nodes / %zu edges\n",
+          clock.seconds(), s.rounds, s.manifolds.slices, s.manifolds.lines, s.graphNodes,
+          s.graphEdges);
     };
     const MmsResult res = planner.solve(q.start, q.goal, Termination(a.timeLimit), progress);
-    nlohmann::json j = runSummary(a, res.status == MmsResult::Status::Found ? "found" : "not_found", res.stats.totalSeconds);
+    nlohmann::json j = runSummary(a, res.status == MmsResult::Status::Found ? "found" : "not_found",
+                                  res.stats.totalSeconds);
     const MmsStats& ms = res.stats;
     j["graph_nodes"] = ms.graphNodes;
     j["graph_edges"] = ms.graphEdges;
     j["parameters"] = {{"n_theta", settings.nTheta}, {"n_lines", settings.nLines}};
-    j["manifolds"] = {{"slices", ms.manifolds.slices}, {"lines", ms.manifolds.lines}, {"path_cells", ms.pathCells}};
-    j["phases"] = {{"slices", ms.manifolds.sliceSeconds}, {"lines", ms.manifolds.lineSeconds},
+    j["manifolds"] = {{"slices", ms.manifolds.slices},
+                      {"lines", ms.manifolds.lines},
+                      {"path_cells", ms.pathCells}};
+    j["phases"] = {{"slices", ms.manifolds.sliceSeconds},
+                   {"lines", ms.manifolds.lineSeconds},
                    {"connect", ms.manifolds.connectSeconds},
-                   {"search", ms.searchSeconds}, {"motion", ms.motionSeconds}, {"certify", ms.certifySeconds}};
+                   {"search", ms.searchSeconds},
+                   {"motion", ms.motionSeconds},
+                   {"certify", ms.certifySeconds}};
     if (res.status == MmsResult::Status::Found) addPath(j, res.certificate, res.waypoints.size());
     summaries.push_back(j);
     if (res.status != MmsResult::Status::Found) {
@@ -287,9 +333,11 @@ int plan(const PlanArgs& a) {
       }
       writeFileAtomically(many ? numbered(a.svg, qi) : a.svg, renderSvg(queryScene, &path, o));
     }
-    std::printf("%s: path found and certified: %zu waypoints, translation %.4g, rotation %.4g rad, min clearance %.3g\n",
-                label.c_str(), path.waypoints.size(), res.certificate.translation, res.certificate.rotation,
-                res.certificate.minClearance);
+    std::printf(
+        "%s: path found and certified: %zu waypoints, translation %.4g, rotation %.4g rad, min "
+        "clearance %.3g\n",
+        label.c_str(), path.waypoints.size(), res.certificate.translation, res.certificate.rotation,
+        res.certificate.minClearance);
     printStats(st);
   }
   writeStats(a, summaries.size() == 1 ? summaries[0] : summaries);

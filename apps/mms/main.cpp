@@ -1,7 +1,6 @@
 // mms: motion planning via manifold samples. Exit codes: 0 success, 1 negative answer (path
 // rejected, no path), 2 bad input or usage, 3 internal error.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -23,14 +22,16 @@ std::string oneLine(std::string s) {
 
 int main(int argc, char** argv) {
   using namespace mms::cli;
-  CLI::App app{"mms: motion planning via manifold samples for planar polygonal robots.\n"
-               "Scene and path formats: docs/formats.md. Exit codes: 0 success, 1 negative answer,\n"
-               "2 bad input, 3 internal error."};
+  CLI::App app{
+      "mms: motion planning via manifold samples for planar polygonal robots.\n"
+      "Scene and path formats: docs/formats.md. Exit codes: 0 success, 1 negative answer,\n"
+      "2 bad input, 3 internal error."};
   app.set_version_flag("--version", "mms 0.1.0");
   app.require_subcommand(1);
 
   ValidateArgs va;
-  auto* validateCmd = app.add_subcommand("validate", "Load and validate a scene (mms-scene/1); print a summary");
+  auto* validateCmd =
+      app.add_subcommand("validate", "Load and validate a scene (mms-scene/1); print a summary");
   validateCmd->add_option("SCENE", va.scene, "Scene file")->required();
   validateCmd->add_flag("-q,--quiet", va.quiet, "Print nothing when valid");
 
@@ -41,8 +42,9 @@ int main(int argc, char** argv) {
       "Exit 0 certified, 1 rejected (first failing segment, parameter and reason), 2 bad input");
   checkCmd->add_option("SCENE", ca.scene, "Scene file")->required();
   checkCmd->add_option("PATH", ca.path, "Path file")->required();
-  checkCmd->add_option("--max-evaluations", ca.maxEvaluations,
-                       "Poses the checker may evaluate before giving up")
+  checkCmd
+      ->add_option("--max-evaluations", ca.maxEvaluations,
+                   "Poses the checker may evaluate before giving up")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
 
@@ -68,72 +70,97 @@ int main(int argc, char** argv) {
   planCmd->add_option("SCENE", pa.scene, "Scene file")->required();
   planCmd->add_option("-o,--output", pa.output, "Write the path (mms-path/1) here");
   planCmd->add_option("--svg", pa.svg, "Write an animated SVG of the scene and path here");
-  planCmd->add_option("--seed", pa.seed, "Random seed (same seed, same path)")->capture_default_str();
+  planCmd->add_option("--seed", pa.seed, "Random seed (same seed, same path)")
+      ->capture_default_str();
   planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e6));
-  planCmd->add_option("--n-theta", pa.nTheta,
-                      "Angles sampled per robot (n_theta). One robot: slices in the first round, doubling each "
-                      "round (default 16). Two robots: the fixed angle set of each robot (default 16)")
+  planCmd
+      ->add_option(
+          "--n-theta", pa.nTheta,
+          "Angles sampled per robot (n_theta). One robot: slices in the first round, doubling each "
+          "round (default 16). Two robots: the fixed angle set of each robot (default 16)")
       ->check(CLI::Range(1, 1000000));
-  planCmd->add_option("--n-lines", pa.nLines,
-                      "Lines (fixed positions, n_l). One robot: in the first round, doubling each round (default "
-                      "1024). Two robots: per subspace (default 128)")
+  planCmd
+      ->add_option("--n-lines", pa.nLines,
+                   "Lines (fixed positions, n_l). One robot: in the first round, doubling each "
+                   "round (default "
+                   "1024). Two robots: per subspace (default 128)")
       ->check(CLI::Range(1, 10000000));
-  planCmd->add_option("--n-fixings", pa.nFixings,
-                      "Two robots: fixings per robot in the first round (n_f), doubling each round (default 8)")
+  planCmd
+      ->add_option(
+          "--n-fixings", pa.nFixings,
+          "Two robots: fixings per robot in the first round (n_f), doubling each round (default 8)")
       ->check(CLI::Range(1, 1000000));
   planCmd->add_flag("-q,--quiet", pa.quiet, "No progress messages on stderr");
   std::vector<std::string> plannerNames{"mms"};
   for (const std::string& n : mms::omplPlannerNames()) plannerNames.push_back(n);
-  planCmd->add_option("--planner", pa.planner,
-                      "mms (default), or an OMPL baseline on the same collision checker: prm, obprm, uobprm, "
-                      "prm-bridge, prm-gaussian, rrt, rrtconnect, kpiece, bkpiece, lazyprm")
+  planCmd
+      ->add_option(
+          "--planner", pa.planner,
+          "mms (default), or an OMPL baseline on the same collision checker: prm, obprm, uobprm, "
+          "prm-bridge, prm-gaussian, rrt, rrtconnect, kpiece, bkpiece, lazyprm")
       ->check(CLI::IsMember(plannerNames));
-  planCmd->add_option("--resolution", pa.resolution,
-                      "OMPL planners: motion-check resolution, a fraction of the state space's extent")
+  planCmd
+      ->add_option("--resolution", pa.resolution,
+                   "OMPL planners: motion-check resolution, a fraction of the state space's extent")
       ->capture_default_str()
       ->check(CLI::Range(1e-7, 0.5));
-  planCmd->add_option("--range", pa.range, "OMPL tree planners and LazyPRM: maximum motion length (0: OMPL's default)")
+  planCmd
+      ->add_option("--range", pa.range,
+                   "OMPL tree planners and LazyPRM: maximum motion length (0: OMPL's default)")
       ->check(CLI::Range(0.0, 1e9));
-  planCmd->add_option("--k", pa.neighbours, "OMPL PRM family: nearest neighbours per milestone (0: OMPL's default)")
+  planCmd
+      ->add_option("--k", pa.neighbours,
+                   "OMPL PRM family: nearest neighbours per milestone (0: OMPL's default)")
       ->check(CLI::Range(0u, 100000u));
-  planCmd->add_option("--segment-factor", pa.segmentFactor,
-                      "U-OB-PRM: segment length l in units of the resolution")
+  planCmd
+      ->add_option("--segment-factor", pa.segmentFactor,
+                   "U-OB-PRM: segment length l in units of the resolution")
       ->capture_default_str()
       ->check(CLI::Range(1.0, 1e6));
-  planCmd->add_flag("--simplify", pa.simplify, "OMPL planners: run OMPL's path simplifier on the solution");
-  planCmd->add_option("--stats-json", pa.statsJson, "Write a JSON summary of the run (status, times, sizes) here");
+  planCmd->add_flag("--simplify", pa.simplify,
+                    "OMPL planners: run OMPL's path simplifier on the solution");
+  planCmd->add_option("--stats-json", pa.statsJson,
+                      "Write a JSON summary of the run (status, times, sizes) here");
   planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
-                    "In the SVG, also draw the lines' points and the free-space cells of the slices the path uses");
-  planCmd->add_option("--queries", pa.queries,
-                      "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "
-                      "\"queries\": [{\"start\": [x,y,theta], \"goal\": [x,y,theta]}, ...]}; with -o/--svg, "
-                      "files are numbered (out.0.json, ...)");
+                    "In the SVG, also draw the lines' points and the free-space cells of the "
+                    "slices the path uses");
+  planCmd->add_option(
+      "--queries", pa.queries,
+      "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "
+      "\"queries\": [{\"start\": [x,y,theta], \"goal\": [x,y,theta]}, ...]}; with -o/--svg, "
+      "files are numbered (out.0.json, ...)");
 
   ScenarioArgs sa;
   auto* scenarioCmd = app.add_subcommand(
-      "scenario", "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
-                  "random-polygons (--seed)");
+      "scenario",
+      "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
+      "random-polygons (--seed)");
   scenarioCmd->add_option("NAME", sa.name, "pacman, viking-helmet or random-polygons")
       ->required()
       ->check(CLI::IsMember({"pacman", "viking-helmet", "random-polygons"}));
   scenarioCmd->add_option("-o,--output", sa.output, "Scene file to write")->required();
-  scenarioCmd->add_option("--tightness", sa.tightness,
-                          "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
+  scenarioCmd
+      ->add_option("--tightness", sa.tightness,
+                   "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.999));
-  scenarioCmd->add_option("--seed", sa.seed, "random-polygons: the seed of the geometry")->capture_default_str();
+  scenarioCmd->add_option("--seed", sa.seed, "random-polygons: the seed of the geometry")
+      ->capture_default_str();
 
   BenchArgs ba;
-  std::string plannersList = "mms,prm,obprm,uobprm,prm-bridge,prm-gaussian,rrt,rrtconnect,kpiece,bkpiece,lazyprm";
+  std::string plannersList =
+      "mms,prm,obprm,uobprm,prm-bridge,prm-gaussian,rrt,rrtconnect,kpiece,bkpiece,lazyprm";
   std::string shard = "1/1";
-  auto* benchCmd = app.add_subcommand(
-      "bench",
-      "Run planners on scenes, N seeds each, every run in its own process under a time and memory limit.\n"
-      "Writes DIR/runs.jsonl as runs finish (rerun to resume), then DIR/report.md (Markdown table),\n"
-      "DIR/results.csv, DIR/ompl/*.log (for ompl_benchmark_statistics / Planner Arena) and, with a\n"
-      "sweep, DIR/tightness.svg");
+  auto* benchCmd = app.add_subcommand("bench",
+                                      "Run planners on scenes, N seeds each, every run in its own "
+                                      "process under a time and memory limit.\n"
+                                      "Writes DIR/runs.jsonl as runs finish (rerun to resume), "
+                                      "then DIR/report.md (Markdown table),\n"
+                                      "DIR/results.csv, DIR/ompl/*.log (for "
+                                      "ompl_benchmark_statistics / Planner Arena) and, with a\n"
+                                      "sweep, DIR/tightness.svg");
   benchCmd->add_option("SCENES", ba.scenes, "Scene files")->check(CLI::ExistingFile);
   benchCmd->add_option("-o,--output", ba.output, "Results folder")->required();
   benchCmd->add_option("--planners", plannersList, "Comma-separated planners (mms and OMPL names)")
@@ -141,26 +168,35 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--runs", ba.runs, "Runs per scene and planner (seeds 1..N)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
-  benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")->capture_default_str()->check(CLI::Range(0.01, 1e6));
+  benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 1e6));
   benchCmd->add_option("--memory-limit", ba.memoryMb, "MB of address space per run")
       ->capture_default_str()
       ->check(CLI::Range(64.0, 1e7));
-  benchCmd->add_option("--sweep-pacman", ba.sweepPacman,
-                       "Comma-separated Pacman tightness values to add as generated scenes, e.g. 0,0.5,0.9");
-  benchCmd->add_option("--param", ba.params,
-                       "Extra mms plan options for one planner, e.g. --param \"prm=--k 10\" (repeatable)");
-  benchCmd->add_option("--shard", shard,
-                       "K/N: run only the K-th of N disjoint parts of the run list (merge with mms bench-merge)")
+  benchCmd->add_option(
+      "--sweep-pacman", ba.sweepPacman,
+      "Comma-separated Pacman tightness values to add as generated scenes, e.g. 0,0.5,0.9");
+  benchCmd->add_option(
+      "--param", ba.params,
+      "Extra mms plan options for one planner, e.g. --param \"prm=--k 10\" (repeatable)");
+  benchCmd
+      ->add_option(
+          "--shard", shard,
+          "K/N: run only the K-th of N disjoint parts of the run list (merge with mms bench-merge)")
       ->capture_default_str();
   benchCmd->add_option("--jobs", ba.jobs, "Runs at a time (timings are noisier above 1)")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
-  benchCmd->add_flag("--report-only", ba.reportOnly, "Only rewrite the reports from the runs recorded in DIR");
+  benchCmd->add_flag("--report-only", ba.reportOnly,
+                     "Only rewrite the reports from the runs recorded in DIR");
 
   std::vector<std::string> mergeDirs;
   std::string mergeOut;
-  auto* mergeCmd = app.add_subcommand("bench-merge", "Merge the runs of several mms bench folders (shards) into one, "
-                                                     "with reports");
+  auto* mergeCmd =
+      app.add_subcommand("bench-merge",
+                         "Merge the runs of several mms bench folders (shards) into one, "
+                         "with reports");
   mergeCmd->add_option("DIRS", mergeDirs, "Benchmark folders")->required();
   mergeCmd->add_option("-o,--output", mergeOut, "Merged folder")->required();
 

@@ -27,8 +27,9 @@ namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
 const std::vector<std::string>& omplPlannerNames() {
-  static const std::vector<std::string> names{"prm",        "obprm",    "uobprm", "prm-bridge", "prm-gaussian",
-                                              "rrt",        "rrtconnect", "kpiece", "bkpiece",  "lazyprm"};
+  static const std::vector<std::string> names{"prm",          "obprm",  "uobprm",     "prm-bridge",
+                                              "prm-gaussian", "rrt",    "rrtconnect", "kpiece",
+                                              "bkpiece",      "lazyprm"};
   return names;
 }
 
@@ -91,7 +92,10 @@ class Validity : public ob::StateValidityChecker {
 class PositionsProjection : public ob::ProjectionEvaluator {
  public:
   PositionsProjection(const ob::StateSpace* space, const Scene& scene)
-      : ob::ProjectionEvaluator(space), layout_{scene}, bounds_(scene.bounds), robots_(scene.robots.size()) {}
+      : ob::ProjectionEvaluator(space),
+        layout_{scene},
+        bounds_(scene.bounds),
+        robots_(scene.robots.size()) {}
   unsigned int getDimension() const override { return unsigned(2 * robots_); }
   void defaultCellSizes() override {
     cellSizes_.clear();
@@ -137,7 +141,8 @@ ob::StateSpacePtr makeSpace(const Scene& scene) {
   return space;
 }
 
-ob::PlannerPtr makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings& s, double extent) {
+ob::PlannerPtr makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings& s,
+                           double extent) {
   const std::string& n = s.planner;
   auto prm = [&] {
     auto p = std::make_shared<og::PRM>(si);
@@ -150,11 +155,17 @@ ob::PlannerPtr makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings
   };
   if (n == "prm") return prm();
   if (n == "obprm")
-    return withSampler([](const ob::SpaceInformation* i) { return std::make_shared<ob::ObstacleBasedValidStateSampler>(i); });
+    return withSampler([](const ob::SpaceInformation* i) {
+      return std::make_shared<ob::ObstacleBasedValidStateSampler>(i);
+    });
   if (n == "prm-bridge")
-    return withSampler([](const ob::SpaceInformation* i) { return std::make_shared<ob::BridgeTestValidStateSampler>(i); });
+    return withSampler([](const ob::SpaceInformation* i) {
+      return std::make_shared<ob::BridgeTestValidStateSampler>(i);
+    });
   if (n == "prm-gaussian")
-    return withSampler([](const ob::SpaceInformation* i) { return std::make_shared<ob::GaussianValidStateSampler>(i); });
+    return withSampler([](const ob::SpaceInformation* i) {
+      return std::make_shared<ob::GaussianValidStateSampler>(i);
+    });
   if (n == "uobprm") {
     const double length = s.segmentFactor * s.resolution * extent;
     const double step = s.resolution * extent;
@@ -195,7 +206,8 @@ ob::PlannerPtr makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings
 // the time limit leaves room (otherwise 0: not counted).
 size_t graphSize(ob::Planner& planner, const ob::SpaceInformationPtr& si, const Termination& stop) {
   const auto& props = planner.getPlannerProgressProperties();
-  if (auto it = props.find("milestone count INTEGER"); it != props.end()) return std::stoul(it->second());
+  if (auto it = props.find("milestone count INTEGER"); it != props.end())
+    return std::stoul(it->second());
   if (stop()) return 0;
   ob::PlannerData data(si);
   planner.getPlannerData(data);
@@ -213,7 +225,8 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   auto owned = std::make_shared<og::SimpleSetup>(makeSpace(scene));
   og::SimpleSetup& setup = *owned;
   if (settings.keepUntilExit) {
-    static auto* kept = new std::vector<std::shared_ptr<og::SimpleSetup>>();  // reachable, never freed
+    static auto* kept =
+        new std::vector<std::shared_ptr<og::SimpleSetup>>();  // reachable, never freed
     kept->push_back(owned);
   }
   const ob::SpaceInformationPtr si = setup.getSpaceInformation();
@@ -230,7 +243,8 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
 
   OmplResult r;
   Stopwatch watch;
-  const ob::PlannerStatus status = setup.solve(ob::PlannerTerminationCondition([&] { return stop(); }));
+  const ob::PlannerStatus status =
+      setup.solve(ob::PlannerTerminationCondition([&] { return stop(); }));
   r.seconds = watch.seconds();
   r.states = graphSize(*setup.getPlanner(), si, stop);
   if (status != ob::PlannerStatus::EXACT_SOLUTION) return r;

@@ -20,10 +20,10 @@ struct OmplSettings {
   /// Motion-check resolution as a fraction of the state space's extent (OMPL's
   /// setStateValidityCheckingResolution).
   double resolution = 0.002;
-  double range = 0;             // RRT, RRT-Connect, KPIECE1, BKPIECE1, LazyPRM: 0 = OMPL's default
-  unsigned neighbours = 0;      // PRM family: k nearest neighbours; 0 = OMPL's default
-  double segmentFactor = 10;    // U-OB-PRM: segment length l = factor x resolution x extent
-  bool simplify = false;        // OMPL's path simplifier on the returned path
+  double range = 0;           // RRT, RRT-Connect, KPIECE1, BKPIECE1, LazyPRM: 0 = OMPL's default
+  unsigned neighbours = 0;    // PRM family: k nearest neighbours; 0 = OMPL's default
+  double segmentFactor = 10;  // U-OB-PRM: segment length l = factor x resolution x extent
+  bool simplify = false;      // OMPL's path simplifier on the returned path
   /// Leave OMPL's planner and states allocated (a command-line run about to exit): freeing
   /// a million states would overrun the time limit by seconds.
   bool keepUntilExit = false;

@@ -10,7 +10,10 @@ namespace mms {
 namespace ob = ompl::base;
 
 UobprmSampler::UobprmSampler(const ob::SpaceInformation* si, double segmentLength, double step)
-    : ob::ValidStateSampler(si), sampler_(si->allocStateSampler()), length_(segmentLength), step_(step) {
+    : ob::ValidStateSampler(si),
+      sampler_(si->allocStateSampler()),
+      length_(segmentLength),
+      step_(step) {
   name_ = "uobprm";
   a_ = si->allocState();
   b_ = si->allocState();

@@ -3,8 +3,8 @@
 // based PRM", IROS 2012), which OMPL lacks: sample a segment of length l, walk it at the
 // collision-checking resolution, and keep the free states where it crosses between free and
 // forbidden space. As in the MMS paper's experiments, half of the samples are drawn uniformly.
-#include <ompl/base/ValidStateSampler.h>
 #include <ompl/base/StateSampler.h>
+#include <ompl/base/ValidStateSampler.h>
 #include <ompl/util/RandomNumbers.h>
 
 #include <deque>
@@ -16,7 +16,8 @@ class UobprmSampler : public ompl::base::ValidStateSampler {
   UobprmSampler(const ompl::base::SpaceInformation* si, double segmentLength, double step);
   ~UobprmSampler() override;
   bool sample(ompl::base::State* state) override;
-  bool sampleNear(ompl::base::State* state, const ompl::base::State* near, double distance) override;
+  bool sampleNear(ompl::base::State* state, const ompl::base::State* near,
+                  double distance) override;
 
  private:
   bool fromSegment(ompl::base::State* out);

@@ -14,11 +14,22 @@
 namespace mms {
 
 nlohmann::json RunRecord::toJson() const {
-  return {{"scene", scene},     {"scene_file", sceneFile}, {"tightness", tightness},   {"planner", planner},
-          {"parameters", parameters}, {"seed", seed},      {"status", status},         {"seconds", seconds},
-          {"wall_seconds", wallSeconds}, {"peak_memory_mb", peakMemoryMb}, {"time_limit", timeLimit},
-          {"memory_limit_mb", memoryLimitMb}, {"translation", translation}, {"rotation", rotation},
-          {"graph_size", graphSize}, {"detail", detail}};
+  return {{"scene", scene},
+          {"scene_file", sceneFile},
+          {"tightness", tightness},
+          {"planner", planner},
+          {"parameters", parameters},
+          {"seed", seed},
+          {"status", status},
+          {"seconds", seconds},
+          {"wall_seconds", wallSeconds},
+          {"peak_memory_mb", peakMemoryMb},
+          {"time_limit", timeLimit},
+          {"memory_limit_mb", memoryLimitMb},
+          {"translation", translation},
+          {"rotation", rotation},
+          {"graph_size", graphSize},
+          {"detail", detail}};
 }
 
 RunRecord RunRecord::fromJson(const nlohmann::json& j) {
@@ -130,35 +141,41 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
 std::string markdownReport(const std::vector<Summary>& summaries, const std::string& heading) {
   std::ostringstream md;
   if (!heading.empty()) md << heading << "\n\n";
-  md << "| scene | planner | parameters | solved | mean ± stdev [s] (no min/max) | median [s] | path length | "
+  md << "| scene | planner | parameters | solved | mean ± stdev [s] (no min/max) | median [s] | "
+        "path length | "
         "graph size | peak memory [MB] |\n";
   md << "|---|---|---|---|---|---|---|---|---|\n";
   for (const Summary& s : summaries) {
-    md << "| " << s.scene << " | " << s.planner << " | " << (s.parameters.empty() ? "defaults" : s.parameters)
-       << " | " << s.solved << "/" << s.runs;
+    md << "| " << s.scene << " | " << s.planner << " | "
+       << (s.parameters.empty() ? "defaults" : s.parameters) << " | " << s.solved << "/" << s.runs;
     if (s.uncertified) md << " (" << s.uncertified << " uncertified)";
     md << " | ";
-    if (s.solved) md << fmt("%.3g", s.meanTrimmed) << " ± " << fmt("%.2g", s.stdevTrimmed);
-    else md << "–";
+    if (s.solved)
+      md << fmt("%.3g", s.meanTrimmed) << " ± " << fmt("%.2g", s.stdevTrimmed);
+    else
+      md << "–";
     md << " | " << (s.medianSolved ? fmt("%.3g", s.median) : "> " + fmt("%g", s.timeLimit)) << " | "
-       << (s.solved ? fmt("%.3g", s.medianLength) : "–") << " | " << fmt("%.0f", s.medianGraph) << " | "
-       << fmt("%.0f", s.peakMemoryMb) << " |\n";
+       << (s.solved ? fmt("%.3g", s.medianLength) : "–") << " | " << fmt("%.0f", s.medianGraph)
+       << " | " << fmt("%.0f", s.peakMemoryMb) << " |\n";
   }
   return md.str();
 }
 
 std::string csvReport(const std::vector<RunRecord>& runs) {
   std::ostringstream csv;
-  csv << "scene,tightness,planner,parameters,seed,status,seconds,wall_seconds,peak_memory_mb,translation,rotation,"
+  csv << "scene,tightness,planner,parameters,seed,status,seconds,wall_seconds,peak_memory_mb,"
+         "translation,rotation,"
          "graph_size\n";
   for (const RunRecord& r : runs)
-    csv << r.scene << "," << r.tightness << "," << r.planner << ",\"" << r.parameters << "\"," << r.seed << ","
-        << r.status << "," << r.seconds << "," << r.wallSeconds << "," << r.peakMemoryMb << "," << r.translation
-        << "," << r.rotation << "," << r.graphSize << "\n";
+    csv << r.scene << "," << r.tightness << "," << r.planner << ",\"" << r.parameters << "\","
+        << r.seed << "," << r.status << "," << r.seconds << "," << r.wallSeconds << ","
+        << r.peakMemoryMb << "," << r.translation << "," << r.rotation << "," << r.graphSize
+        << "\n";
   return csv.str();
 }
 
-std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunRecord>& runs, const std::string& host) {
+std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunRecord>& runs,
+                                                          const std::string& host) {
   std::vector<std::string> scenes;
   for (const RunRecord& r : runs)
     if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
@@ -169,7 +186,8 @@ std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunR
     for (const RunRecord& r : runs) {
       if (r.scene != scene) continue;
       const std::string name = r.parameters.empty() ? r.planner : r.planner + " " + r.parameters;
-      auto it = std::find_if(planners.begin(), planners.end(), [&](const auto& p) { return p.first == name; });
+      auto it = std::find_if(planners.begin(), planners.end(),
+                             [&](const auto& p) { return p.first == name; });
       if (it == planners.end()) planners.push_back({name, {}}), it = planners.end() - 1;
       it->second.push_back(&r);
       total += r.wallSeconds;
@@ -179,7 +197,8 @@ std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunR
     std::ostringstream log;
     size_t maxRuns = 0;
     for (const auto& p : planners) maxRuns = std::max(maxRuns, p.second.size());
-    log << "MMS version 0.1.0\nExperiment " << scene << "\nRunning on " << host << "\nStarting at unknown\n"
+    log << "MMS version 0.1.0\nExperiment " << scene << "\nRunning on " << host
+        << "\nStarting at unknown\n"
         << "<<<|\nmms bench on scene " << scene << "\n|>>>\n<<<|\n|>>>\n"
         << "1 is the random seed\n"
         << limit << " seconds per run\n"
@@ -192,13 +211,17 @@ std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunR
       std::string id = name;
       std::replace(id.begin(), id.end(), ' ', '_');
       log << id << "\n0 common properties\n7 properties for each run\n"
-          << "time REAL\nmemory REAL\nsolved BOOLEAN\nstatus ENUM\nsolution_length REAL\ngraph_states INTEGER\n"
+          << "time REAL\nmemory REAL\nsolved BOOLEAN\nstatus ENUM\nsolution_length "
+             "REAL\ngraph_states INTEGER\n"
           << "seed INTEGER\n"
           << rs.size() << " runs\n";
       for (const RunRecord* r : rs) {
-        const int status = r->solved() ? 0 : r->status == "uncertified" ? 2 : r->status == "not_found" ? 1 : 3;
-        log << (r->solved() ? r->seconds : r->timeLimit) << "; " << r->peakMemoryMb << "; " << (r->solved() ? 1 : 0)
-            << "; " << status << "; ";
+        const int status = r->solved()                  ? 0
+                           : r->status == "uncertified" ? 2
+                           : r->status == "not_found"   ? 1
+                                                        : 3;
+        log << (r->solved() ? r->seconds : r->timeLimit) << "; " << r->peakMemoryMb << "; "
+            << (r->solved() ? 1 : 0) << "; " << status << "; ";
         if (r->solved()) log << r->translation;
         log << "; " << r->graphSize << "; " << r->seed << "; \n";
       }
@@ -214,7 +237,8 @@ std::string tightnessPlot(const std::vector<Summary>& summaries, const std::stri
   double tMin = 1e9, tMax = -1e9, yMax = 1e-3, yMin = 1e9, limit = 0;
   for (const Summary& s : summaries) {
     if (s.tightness < 0) continue;
-    if (std::find(planners.begin(), planners.end(), s.planner) == planners.end()) planners.push_back(s.planner);
+    if (std::find(planners.begin(), planners.end(), s.planner) == planners.end())
+      planners.push_back(s.planner);
     tMin = std::min(tMin, s.tightness);
     tMax = std::max(tMax, s.tightness);
     limit = std::max(limit, s.timeLimit);
@@ -234,36 +258,45 @@ std::string tightnessPlot(const std::vector<Summary>& summaries, const std::stri
   const double W = 760, H = 420, L = 70, R = 190, T = 40, B = 50;
   auto X = [&](double t) { return L + (t - tMin) / (tMax - tMin) * (W - L - R); };
   auto Y = [&](double y) {
-    return T + (std::log10(yMax) - std::log10(std::max(y, yMin))) / (std::log10(yMax) - std::log10(yMin)) * (H - T - B);
+    return T + (std::log10(yMax) - std::log10(std::max(y, yMin))) /
+                   (std::log10(yMax) - std::log10(yMin)) * (H - T - B);
   };
   const char* colours[] = {"#d62728", "#1f77b4", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b",
                            "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#000000"};
   std::ostringstream svg;
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W
-      << "\" height=\"" << H << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+         "width=\""
+      << W << "\" height=\"" << H << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<text x=\"" << L << "\" y=\"24\" font-size=\"15\">" << title << "</text>\n";
   // Axes, decades, ticks.
   svg << "<g stroke=\"#999\" stroke-width=\"0.5\">\n";
   for (double y = yMin; y <= yMax * 1.0001; y *= 10)
-    svg << "<line x1=\"" << L << "\" x2=\"" << W - R << "\" y1=\"" << Y(y) << "\" y2=\"" << Y(y) << "\"/>\n";
+    svg << "<line x1=\"" << L << "\" x2=\"" << W - R << "\" y1=\"" << Y(y) << "\" y2=\"" << Y(y)
+        << "\"/>\n";
   svg << "</g>\n";
   for (double y = yMin; y <= yMax * 1.0001; y *= 10)
-    svg << "<text x=\"" << L - 6 << "\" y=\"" << Y(y) + 4 << "\" text-anchor=\"end\">" << fmt("%g", y) << "</text>\n";
+    svg << "<text x=\"" << L - 6 << "\" y=\"" << Y(y) + 4 << "\" text-anchor=\"end\">"
+        << fmt("%g", y) << "</text>\n";
   std::set<double> ts;
   for (const Summary& s : summaries)
     if (s.tightness >= 0) ts.insert(s.tightness);
   for (double t : ts)
-    svg << "<text x=\"" << X(t) << "\" y=\"" << H - B + 16 << "\" text-anchor=\"middle\">" << fmt("%g", t) << "</text>\n";
-  svg << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 10 << "\" text-anchor=\"middle\">tightness</text>\n"
-      << "<text x=\"16\" y=\"" << (T + H - B) / 2 << "\" transform=\"rotate(-90 16 " << (T + H - B) / 2
+    svg << "<text x=\"" << X(t) << "\" y=\"" << H - B + 16 << "\" text-anchor=\"middle\">"
+        << fmt("%g", t) << "</text>\n";
+  svg << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 10
+      << "\" text-anchor=\"middle\">tightness</text>\n"
+      << "<text x=\"16\" y=\"" << (T + H - B) / 2 << "\" transform=\"rotate(-90 16 "
+      << (T + H - B) / 2
       << ")\" text-anchor=\"middle\">planning time [s] (mean ± 1 stdev, log scale)</text>\n"
-      << "<line x1=\"" << L << "\" y1=\"" << H - B << "\" x2=\"" << W - R << "\" y2=\"" << H - B << "\" stroke=\"black\"/>\n"
-      << "<line x1=\"" << L << "\" y1=\"" << T << "\" x2=\"" << L << "\" y2=\"" << H - B << "\" stroke=\"black\"/>\n";
+      << "<line x1=\"" << L << "\" y1=\"" << H - B << "\" x2=\"" << W - R << "\" y2=\"" << H - B
+      << "\" stroke=\"black\"/>\n"
+      << "<line x1=\"" << L << "\" y1=\"" << T << "\" x2=\"" << L << "\" y2=\"" << H - B
+      << "\" stroke=\"black\"/>\n";
   if (limit > 0)
-    svg << "<line x1=\"" << L << "\" x2=\"" << W - R << "\" y1=\"" << Y(limit) << "\" y2=\"" << Y(limit)
-        << "\" stroke=\"black\" stroke-dasharray=\"4 3\"/><text x=\"" << L + 4 << "\" y=\"" << Y(limit) - 4
-        << "\">time limit</text>\n";
+    svg << "<line x1=\"" << L << "\" x2=\"" << W - R << "\" y1=\"" << Y(limit) << "\" y2=\""
+        << Y(limit) << "\" stroke=\"black\" stroke-dasharray=\"4 3\"/><text x=\"" << L + 4
+        << "\" y=\"" << Y(limit) - 4 << "\">time limit</text>\n";
   for (size_t pi = 0; pi < planners.size(); ++pi) {
     const char* c = colours[pi % 11];
     std::vector<const Summary*> pts;
@@ -276,20 +309,26 @@ std::string tightnessPlot(const std::vector<Summary>& summaries, const std::stri
       const double x = X(s->tightness) + dx;
       if (s->solved) {
         line += fmt("%.1f", x) + "," + fmt("%.1f", Y(s->meanTrimmed)) + " ";
-        svg << "<line x1=\"" << x << "\" x2=\"" << x << "\" y1=\"" << Y(s->meanTrimmed + s->stdevTrimmed) << "\" y2=\""
+        svg << "<line x1=\"" << x << "\" x2=\"" << x << "\" y1=\""
+            << Y(s->meanTrimmed + s->stdevTrimmed)
+            << "\" y2=\""
             // On a log axis a stdev larger than the mean has no lower end: stop at half the mean.
-            << Y(std::max(0.5 * s->meanTrimmed, s->meanTrimmed - s->stdevTrimmed)) << "\" stroke=\"" << c << "\"/>\n"
-            << "<circle cx=\"" << x << "\" cy=\"" << Y(s->meanTrimmed) << "\" r=\"3.5\" fill=\"" << c << "\"/>\n";
+            << Y(std::max(0.5 * s->meanTrimmed, s->meanTrimmed - s->stdevTrimmed)) << "\" stroke=\""
+            << c << "\"/>\n"
+            << "<circle cx=\"" << x << "\" cy=\"" << Y(s->meanTrimmed) << "\" r=\"3.5\" fill=\""
+            << c << "\"/>\n";
       }
       if (s->solved < s->runs)  // unsolved runs: a cross at the time limit with the count
-        svg << "<text x=\"" << x << "\" y=\"" << Y(limit) + 4 << "\" text-anchor=\"middle\" fill=\"" << c
-            << "\" font-weight=\"bold\">×</text><text x=\"" << x << "\" y=\"" << Y(limit) - 8 - 9 * double(pi)
-            << "\" text-anchor=\"middle\" fill=\"" << c << "\" font-size=\"8\">" << s->runs - s->solved << "/"
-            << s->runs << "</text>\n";
+        svg << "<text x=\"" << x << "\" y=\"" << Y(limit) + 4 << "\" text-anchor=\"middle\" fill=\""
+            << c << "\" font-weight=\"bold\">×</text><text x=\"" << x << "\" y=\""
+            << Y(limit) - 8 - 9 * double(pi) << "\" text-anchor=\"middle\" fill=\"" << c
+            << "\" font-size=\"8\">" << s->runs - s->solved << "/" << s->runs << "</text>\n";
     }
-    if (!line.empty()) svg << "<polyline fill=\"none\" stroke=\"" << c << "\" points=\"" << line << "\"/>\n";
-    svg << "<rect x=\"" << W - R + 12 << "\" y=\"" << T + 18 * pi << "\" width=\"12\" height=\"12\" fill=\"" << c
-        << "\"/><text x=\"" << W - R + 30 << "\" y=\"" << T + 18 * pi + 10 << "\">" << planners[pi] << "</text>\n";
+    if (!line.empty())
+      svg << "<polyline fill=\"none\" stroke=\"" << c << "\" points=\"" << line << "\"/>\n";
+    svg << "<rect x=\"" << W - R + 12 << "\" y=\"" << T + 18 * pi
+        << "\" width=\"12\" height=\"12\" fill=\"" << c << "\"/><text x=\"" << W - R + 30
+        << "\" y=\"" << T + 18 * pi + 10 << "\">" << planners[pi] << "</text>\n";
   }
   svg << "<text x=\"" << W - R + 12 << "\" y=\"" << T + 18 * planners.size() + 14
       << "\" font-size=\"10\">× n/m: n of m runs unsolved</text>\n</svg>\n";

@@ -9,9 +9,9 @@
 namespace mms {
 
 struct RunRecord {
-  std::string scene;       // scene name (from the file)
+  std::string scene;  // scene name (from the file)
   std::string sceneFile;
-  double tightness = -1;   // for swept scenes (Pacman), else -1
+  double tightness = -1;  // for swept scenes (Pacman), else -1
   std::string planner;
   std::string parameters;  // as given to mms plan, e.g. "--k 10"
   uint64_t seed = 0;
@@ -34,8 +34,9 @@ struct Summary {
   std::string scene, planner, parameters;
   double tightness = -1, timeLimit = 0;
   size_t runs = 0, solved = 0, uncertified = 0;
-  double meanTrimmed = 0, stdevTrimmed = 0;  // over solved runs, without the fastest and slowest (paper's protocol)
-  double median = 0;                         // over all runs, an unsolved run counting as infinite
+  double meanTrimmed = 0,
+         stdevTrimmed = 0;  // over solved runs, without the fastest and slowest (paper's protocol)
+  double median = 0;        // over all runs, an unsolved run counting as infinite
   bool medianSolved = false;
   double medianLength = 0, medianGraph = 0, peakMemoryMb = 0;
 };
@@ -45,7 +46,8 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs);
 std::string markdownReport(const std::vector<Summary>& summaries, const std::string& heading);
 std::string csvReport(const std::vector<RunRecord>& runs);
 /// One OMPL benchmark log per scene: scene name -> log text.
-std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunRecord>& runs, const std::string& host);
+std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunRecord>& runs,
+                                                          const std::string& host);
 /// SVG plot of mean planning time (log scale) against tightness with one-stdev error bars per
 /// planner; unsolved runs are drawn as such at the top.
 std::string tightnessPlot(const std::vector<Summary>& summaries, const std::string& title);

@@ -28,7 +28,11 @@ class Certifier {
  public:
   Certifier(const Scene& scene, const CollisionChecker& checker, const PathCheckSettings& settings,
             PathCheckResult& result)
-      : scene_(scene), checker_(checker), settings_(settings), r_(result), k_(scene.robots.size()) {}
+      : scene_(scene),
+        checker_(checker),
+        settings_(settings),
+        r_(result),
+        k_(scene.robots.size()) {}
 
   // Certifies the motion from a to b; on failure fills the result and returns false.
   bool segment(size_t index, const Config& a, const Config& b) {
@@ -68,7 +72,8 @@ class Certifier {
       }
       if (half * maxRate() < 0.25 * checker_.tolerance()) {
         failAt = mid;
-        failWhy = why_ + " (clearance below the contact tolerance " + num(checker_.tolerance()) + ")";
+        failWhy =
+            why_ + " (clearance below the contact tolerance " + num(checker_.tolerance()) + ")";
         continue;
       }
       stack.push_back({mid, p.s1});

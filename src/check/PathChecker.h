@@ -40,6 +40,7 @@ PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker, c
 
 /// Only the continuous-motion part: every segment between consecutive waypoints is free.
 PathCheckResult checkMotion(const Scene& scene, const CollisionChecker& checker,
-                            const std::vector<Config>& waypoints, const PathCheckSettings& settings = {});
+                            const std::vector<Config>& waypoints,
+                            const PathCheckSettings& settings = {});
 
 }  // namespace mms

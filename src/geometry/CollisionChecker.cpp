@@ -11,10 +11,14 @@ namespace mms {
 
 std::string Contact::describe(const Scene& scene) const {
   switch (kind) {
-    case Kind::None: return "nothing";
-    case Kind::Bounds: return "the bounds";
-    case Kind::Obstacle: return "obstacles[" + std::to_string(index) + "]";
-    case Kind::Robot: return "robot '" + scene.robots[index].name + "'";
+    case Kind::None:
+      return "nothing";
+    case Kind::Bounds:
+      return "the bounds";
+    case Kind::Obstacle:
+      return "obstacles[" + std::to_string(index) + "]";
+    case Kind::Robot:
+      return "robot '" + scene.robots[index].name + "'";
   }
   return "?";
 }
@@ -23,8 +27,9 @@ ShrunkShape shrinkForContacts(const Ring& shape, double tolerance) {
   ShrinkResult r = shrinkRing(shape, tolerance);
   if (r.error) return {{}, r.error};
   auto tooSmall = [&](const std::string& why) {
-    return ShrunkShape{{}, "a feature is smaller than the contact tolerance " +
-                               std::to_string(tolerance) + " (" + why + ")"};
+    return ShrunkShape{{},
+                       "a feature is smaller than the contact tolerance " +
+                           std::to_string(tolerance) + " (" + why + ")"};
   };
   if (findSelfIntersection(r.ring)) return tooSmall("the shape shrunk by it is not simple");
   if (!isCounterClockwise(r.ring)) return tooSmall("the shape shrunk by it turns over");

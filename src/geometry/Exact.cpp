@@ -51,7 +51,8 @@ Ring toDouble(const Polygon& poly) {
 Polygon rotated(const Polygon& poly, const RationalAngle& angle) {
   const auto [c, s] = angle.cosSin();
   Polygon out;
-  for (const Point& p : poly.vertices()) out.push_back(Point(c * p.x() - s * p.y(), s * p.x() + c * p.y()));
+  for (const Point& p : poly.vertices())
+    out.push_back(Point(c * p.x() - s * p.y(), s * p.x() + c * p.y()));
   return out;
 }
 

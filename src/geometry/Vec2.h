@@ -52,7 +52,8 @@ struct Pose {
 /// Rigid transform with its rotation precomputed; the hot loops transform many vertices.
 struct Transform {
   double c = 1, s = 0, tx = 0, ty = 0;
-  explicit Transform(const Pose& p) : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.x), ty(p.y) {}
+  explicit Transform(const Pose& p)
+      : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.x), ty(p.y) {}
   Vec2 operator()(Vec2 v) const { return {tx + c * v.x - s * v.y, ty + s * v.x + c * v.y}; }
 };
 

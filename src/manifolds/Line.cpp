@@ -115,7 +115,8 @@ std::vector<double> criticalAngles(const LineWorld& world, Vec2 p, LineStats* st
     if (dist > reachMargin) return;
     for (size_t i = 0; i < n; ++i) {
       const Vec2 v1 = robot[i], v2 = robot[(i + 1) % n];
-      if (dist > std::max(vertexRadius[i], vertexRadius[(i + 1) % n]) * (1 + kSlack) + 1e-12) continue;
+      if (dist > std::max(vertexRadius[i], vertexRadius[(i + 1) % n]) * (1 + kSlack) + 1e-12)
+        continue;
       if (stats) ++stats->candidates;
       const Vec2 d = v2 - v1;
       const double len2 = dot(d, d);
@@ -169,8 +170,10 @@ Line::Line(const LineWorld& world, const PoseTest& isFree, Vec2 p, LineStats* st
   }
   // Merge touching free intervals (they meet at a critical angle that does not block).
   for (const Arc& a : intervals) {
-    if (!arcs_.empty() && arcs_.back().hi == a.lo) arcs_.back().hi = a.hi;
-    else arcs_.push_back(a);
+    if (!arcs_.empty() && arcs_.back().hi == a.lo)
+      arcs_.back().hi = a.hi;
+    else
+      arcs_.push_back(a);
   }
   if (arcs_.size() > 1 && arcs_.back().hi == arcs_.front().lo + kTwoPi) {  // across +-pi
     arcs_.front() = {arcs_.back().lo, arcs_.front().hi + kTwoPi};

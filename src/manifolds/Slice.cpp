@@ -25,7 +25,7 @@ using Arrangement = PolygonSet::Arrangement_2;
 
 struct SliceWorld::Impl {
   Box bounds;
-  Polygon robot;                 // exact, counter-clockwise, robot frame
+  Polygon robot;                   // exact, counter-clockwise, robot frame
   std::vector<Polygon> obstacles;  // exact, counter-clockwise
   std::vector<Box> obstacleBoxes;
 };
@@ -36,7 +36,8 @@ SliceWorld::SliceWorld(const Scene& scene, size_t robot, std::vector<Ring> extra
   impl_->robot = exact::toExact(scene.robots[robot].shape);
   auto add = [&](const Ring& r) {
     impl_->obstacles.push_back(exact::toExact(r));
-    if (impl_->obstacles.back().is_clockwise_oriented()) impl_->obstacles.back().reverse_orientation();
+    if (impl_->obstacles.back().is_clockwise_oriented())
+      impl_->obstacles.back().reverse_orientation();
     impl_->obstacleBoxes.push_back(boundingBox(r));
   };
   for (const Ring& o : scene.obstacles) add(o);
@@ -68,8 +69,8 @@ double ringsArea(const std::vector<Ring>& rings) {
 }  // namespace
 
 struct Slice::Impl {
-  Polygon neg;     // -R_theta
-  Box regionBox;   // reference points keeping the robot inside the bounds (doubles, for culling)
+  Polygon neg;    // -R_theta
+  Box regionBox;  // reference points keeping the robot inside the bounds (doubles, for culling)
   PolygonSet free;
   std::variant<std::monostate, Walk, Trapezoid, Landmarks> locator;
   // Auto: the walk answers until kUpgradeAfter queries, then a trapezoidal map takes over.
@@ -87,13 +88,15 @@ struct Slice::Impl {
 namespace {
 
 // Sums of `obstacles` with -R_theta that can reach the region (boxes in doubles, with a margin).
-std::vector<PolygonWithHoles> reachingSums(const std::vector<Polygon>& obstacles, const std::vector<Box>& boxes,
-                                           const Polygon& neg, const Box& regionBox) {
+std::vector<PolygonWithHoles> reachingSums(const std::vector<Polygon>& obstacles,
+                                           const std::vector<Box>& boxes, const Polygon& neg,
+                                           const Box& regionBox) {
   const Box negBox = boundingBox(exact::toDouble(neg));
   std::vector<PolygonWithHoles> sums;
   for (size_t i = 0; i < obstacles.size(); ++i) {
     const Box& o = boxes[i];
-    const double m = 1e-9 * (1 + std::fabs(o.xmax) + std::fabs(o.ymax) + std::fabs(o.xmin) + std::fabs(o.ymin));
+    const double m =
+        1e-9 * (1 + std::fabs(o.xmax) + std::fabs(o.ymax) + std::fabs(o.xmin) + std::fabs(o.ymin));
     const Box sumBox{o.xmin + negBox.xmin - m, o.ymin + negBox.ymin - m, o.xmax + negBox.xmax + m,
                      o.ymax + negBox.ymax + m};
     if (sumBox.overlaps(regionBox)) sums.push_back(CGAL::minkowski_sum_2(obstacles[i], neg));
@@ -110,7 +113,8 @@ void Slice::index(PointLocation strategy) {
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
     if (!f->contained() || f->is_unbounded()) continue;
     std::vector<Ring> rings{ccbRing(f->outer_ccb())};
-    for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) rings.push_back(ccbRing(*h));
+    for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h)
+      rings.push_back(ccbRing(*h));
     im.faceIndex[&*f] = int(im.cells.size());
     im.areas.push_back(ringsArea(rings));
     im.cells.push_back(std::move(rings));
@@ -120,9 +124,15 @@ void Slice::index(PointLocation strategy) {
       im.autoUpgrade = true;
       im.locator.emplace<Walk>(arr);
       break;
-    case PointLocation::Walk: im.locator.emplace<Walk>(arr); break;
-    case PointLocation::Trapezoid: im.locator.emplace<Trapezoid>(arr); break;
-    case PointLocation::Landmarks: im.locator.emplace<Landmarks>(arr); break;
+    case PointLocation::Walk:
+      im.locator.emplace<Walk>(arr);
+      break;
+    case PointLocation::Trapezoid:
+      im.locator.emplace<Trapezoid>(arr);
+      break;
+    case PointLocation::Landmarks:
+      im.locator.emplace<Landmarks>(arr);
+      break;
   }
 }
 
@@ -136,7 +146,8 @@ Slice::Slice(const Slice& base, const std::vector<Ring>& extraObstacles, PointLo
     if (polys.back().is_clockwise_oriented()) polys.back().reverse_orientation();
     boxes.push_back(boundingBox(r));
   }
-  std::vector<PolygonWithHoles> sums = reachingSums(polys, boxes, base.impl_->neg, base.impl_->regionBox);
+  std::vector<PolygonWithHoles> sums =
+      reachingSums(polys, boxes, base.impl_->neg, base.impl_->regionBox);
   if (sums.empty()) return;  // nothing changes: share the base's cells
   auto im = std::make_shared<Impl>();
   im->neg = base.impl_->neg;
@@ -178,8 +189,10 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
   region.push_back(Point(xlo, yhi));
 
   impl_->neg = neg;
-  impl_->regionBox = {CGAL::to_double(xlo), CGAL::to_double(ylo), CGAL::to_double(xhi), CGAL::to_double(yhi)};
-  std::vector<PolygonWithHoles> sums = reachingSums(w.obstacles, w.obstacleBoxes, neg, impl_->regionBox);
+  impl_->regionBox = {CGAL::to_double(xlo), CGAL::to_double(ylo), CGAL::to_double(xhi),
+                      CGAL::to_double(yhi)};
+  std::vector<PolygonWithHoles> sums =
+      reachingSums(w.obstacles, w.obstacleBoxes, neg, impl_->regionBox);
   impl_->free = PolygonSet(region);
   if (!sums.empty()) {
     PolygonSet forbidden;
@@ -221,7 +234,8 @@ int Slice::locate(Vec2 p) const {
   }
   std::visit(
       [&](const auto& pl) {
-        if constexpr (!std::is_same_v<std::decay_t<decltype(pl)>, std::monostate>) answer(pl.locate(q));
+        if constexpr (!std::is_same_v<std::decay_t<decltype(pl)>, std::monostate>)
+          answer(pl.locate(q));
       },
       impl_->locator);
   return result;

@@ -27,7 +27,8 @@ Vec2 toVec(const P& p) { return {p.x(), p.y()}; }
 }  // namespace
 
 std::optional<std::vector<Vec2>> routeInCell(const std::vector<Ring>& rings,
-                                             const std::function<bool(Vec2)>& inCell, Vec2 a, Vec2 b) {
+                                             const std::function<bool(Vec2)>& inCell, Vec2 a,
+                                             Vec2 b) {
   CDT cdt;
   for (const Ring& r : rings)
     for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
@@ -60,7 +61,8 @@ std::optional<std::vector<Vec2>> routeInCell(const std::vector<Ring>& rings,
     queue.pop_front();
     for (int i = 0; i < 3; ++i) {
       CDT::Face_handle g = f->neighbor(i);
-      if (cdt.is_infinite(g) || !g->info().inside || g->info().visitedFrom != -2 || f->is_constrained(i))
+      if (cdt.is_infinite(g) || !g->info().inside || g->info().visitedFrom != -2 ||
+          f->is_constrained(i))
         continue;
       g->info().visitedFrom = g->index(f);
       queue.push_back(g);
@@ -71,7 +73,8 @@ std::optional<std::vector<Vec2>> routeInCell(const std::vector<Ring>& rings,
   std::vector<Vec2> back{b};
   for (CDT::Face_handle f = *fb; f->info().visitedFrom != -1;) {
     const int i = f->info().visitedFrom;  // edge i of f (opposite vertex i) leads back
-    const Vec2 p = toVec(f->vertex(CDT::cw(i))->point()), q = toVec(f->vertex(CDT::ccw(i))->point());
+    const Vec2 p = toVec(f->vertex(CDT::cw(i))->point()),
+               q = toVec(f->vertex(CDT::ccw(i))->point());
     back.push_back(0.5 * (p + q));
     f = f->neighbor(i);
   }

@@ -15,6 +15,7 @@ namespace mms {
 /// cell's interior (exact point location), used to keep the triangles inside it. Returns the
 /// route from a to b, both included, or nothing if none is found.
 std::optional<std::vector<Vec2>> routeInCell(const std::vector<Ring>& rings,
-                                             const std::function<bool(Vec2)>& inCell, Vec2 a, Vec2 b);
+                                             const std::function<bool(Vec2)>& inCell, Vec2 a,
+                                             Vec2 b);
 
 }  // namespace mms

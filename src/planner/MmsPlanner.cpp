@@ -33,8 +33,8 @@ MmsPlanner::MmsPlanner(const Scene& scene, size_t robot, MmsSettings settings)
       sliceWorld_(scene_, 0),
       rng_(settings.seed),
       angles_(settings.nTheta, rng_.uniform(0, 2 * M_PI)) {
-  subspaces_.push_back(std::make_unique<Subspace>(0, scene_, checker_, 0, std::vector<std::pair<size_t, Pose>>{},
-                                                  graph_, stats_.manifolds));
+  subspaces_.push_back(std::make_unique<Subspace>(
+      0, scene_, checker_, 0, std::vector<std::pair<size_t, Pose>>{}, graph_, stats_.manifolds));
 }
 
 MmsPlanner::~MmsPlanner() = default;
@@ -71,13 +71,14 @@ MmsResult MmsPlanner::finish(MmsResult result, MmsResult::Status status, double 
 
 // A translate-only robot has a 2-D C-space: the one slice at its angle is its exact free
 // space, so start and goal are connected iff they lie in the same cell. Complete, no sampling.
-MmsResult::Status MmsPlanner::solveTranslation(const Pose& start, const Pose& goal, MmsResult& result) {
+MmsResult::Status MmsPlanner::solveTranslation(const Pose& start, const Pose& goal,
+                                               MmsResult& result) {
   if (slices().empty()) addSlice(start.theta);
   const Slice& s = slices().front();
   const int a = s.locate({start.x, start.y}), b = s.locate({goal.x, goal.y});
   if (a < 0 || a != b) return MmsResult::Status::NotFound;
-  const auto route = routeInCell(s.cell(a), [&](Vec2 p) { return s.locate(p) == a; }, {start.x, start.y},
-                                 {goal.x, goal.y});
+  const auto route = routeInCell(s.cell(a), [&](Vec2 p) { return s.locate(p) == a; },
+                                 {start.x, start.y}, {goal.x, goal.y});
   if (!route) return MmsResult::Status::NotFound;
   std::vector<Config> w;
   for (Vec2 p : *route) w.push_back({p.x, p.y, start.theta});
@@ -104,9 +105,12 @@ MmsResult MmsPlanner::solve(const Pose& start, const Pose& goal, const Terminati
     return finish(result, solveTranslation(start, goal, result), total.seconds());
   // Start and goal enter through lines at their positions (a line holds every angle).
   Subspace& sub = subspace();
-  const size_t startLine = sub.addLine({start.x, start.y}), goalLine = sub.addLine({goal.x, goal.y});
-  const long from = sub.lineNodeAt(startLine, start.theta), to = sub.lineNodeAt(goalLine, goal.theta);
-  if (from < 0 || to < 0) return finish(result, MmsResult::Status::NotFound, total.seconds());  // not free
+  const size_t startLine = sub.addLine({start.x, start.y}),
+               goalLine = sub.addLine({goal.x, goal.y});
+  const long from = sub.lineNodeAt(startLine, start.theta),
+             to = sub.lineNodeAt(goalLine, goal.theta);
+  if (from < 0 || to < 0)
+    return finish(result, MmsResult::Status::NotFound, total.seconds());  // not free
 
   size_t targetSlices = std::max(slices().size(), settings_.nTheta);
   size_t targetLines = std::max(lines().size(), settings_.nLines);
@@ -140,7 +144,8 @@ MmsResult MmsPlanner::solve(const Pose& start, const Pose& goal, const Terminati
     }
     report(true);
     if (stop())
-      return finish(result, stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound,
+      return finish(result,
+                    stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound,
                     total.seconds());
     targetSlices *= 2;
     targetLines *= 2;

@@ -23,8 +23,8 @@ namespace mms {
 
 struct MmsSettings {
   uint64_t seed = 1;
-  size_t nTheta = 16;     // n_theta: slices in the first round (the paper's name)
-  size_t nLines = 1024;   // n_l: lines in the first round (a line costs ~10 us, a slice ~1 ms)
+  size_t nTheta = 16;          // n_theta: slices in the first round (the paper's name)
+  size_t nLines = 1024;        // n_l: lines in the first round (a line costs ~10 us, a slice ~1 ms)
   double freeLineShare = 0.5;  // share of line points drawn inside slice FSCs, the rest uniform
   size_t shortcutAttempts = 200;
   PointLocation pointLocation = PointLocation::Auto;
@@ -52,7 +52,7 @@ struct MmsStats {
 
 struct MmsResult {
   enum class Status { Found, NotFound, Cancelled } status = Status::NotFound;
-  std::vector<Config> waypoints;  // the robot's (x, y, theta), certified when Found
+  std::vector<Config> waypoints;               // the robot's (x, y, theta), certified when Found
   std::vector<ConnectivityGraph::Node> cells;  // the graph path: line arcs and slice cells
   PathCheckResult certificate;
   MmsStats stats;

@@ -8,10 +8,9 @@
 
 namespace mms {
 
-std::optional<std::vector<Config>> graphPathMotion(const ConnectivityGraph& graph,
-                                                   const std::vector<std::unique_ptr<Subspace>>& subspaces,
-                                                   const std::vector<size_t>& nodes, const Config& start,
-                                                   const Config& goal) {
+std::optional<std::vector<Config>> graphPathMotion(
+    const ConnectivityGraph& graph, const std::vector<std::unique_ptr<Subspace>>& subspaces,
+    const std::vector<size_t>& nodes, const Config& start, const Config& goal) {
   using Kind = ConnectivityGraph::Kind;
   Config q = start;
   std::vector<Config> w{q};
@@ -35,13 +34,14 @@ std::optional<std::vector<Config>> graphPathMotion(const ConnectivityGraph& grap
     if (n.kind == Kind::LineArc) {
       const Arc& arc = sub.lines()[n.manifold].arcs()[n.cell];
       double& theta = q[3 * m + 2];
-      theta += arc.full() ? std::remainder(exit.theta - theta, 2 * M_PI) : arc.unwrap(exit.theta) - arc.unwrap(theta);
+      theta += arc.full() ? std::remainder(exit.theta - theta, 2 * M_PI)
+                          : arc.unwrap(exit.theta) - arc.unwrap(theta);
       w.push_back(q);
     } else {
       const Slice& slice = sub.slices()[n.manifold];
-      const auto route = routeInCell(
-          slice.cell(n.cell), [&](Vec2 p) { return slice.locate(p) == int(n.cell); }, {q[3 * m], q[3 * m + 1]},
-          {exit.x, exit.y});
+      const auto route =
+          routeInCell(slice.cell(n.cell), [&](Vec2 p) { return slice.locate(p) == int(n.cell); },
+                      {q[3 * m], q[3 * m + 1]}, {exit.x, exit.y});
       if (!route) return std::nullopt;
       for (size_t j = 1; j < route->size(); ++j) {
         q[3 * m] = (*route)[j].x;
@@ -76,13 +76,16 @@ void shortcutPath(const Scene& scene, const CollisionChecker& checker, Random& r
     if (i > j) std::swap(i, j);
     if (j < i + 2) continue;
     if (oneRobotAtATime && movingRobots(w, i, j) > 1) continue;
-    if (checkMotion(scene, checker, {w[i], w[j]}, quick).ok) w.erase(w.begin() + i + 1, w.begin() + j);
+    if (checkMotion(scene, checker, {w[i], w[j]}, quick).ok)
+      w.erase(w.begin() + i + 1, w.begin() + j);
   }
 }
 
-CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& checker, const ConnectivityGraph& graph,
+CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& checker,
+                                const ConnectivityGraph& graph,
                                 const std::vector<std::unique_ptr<Subspace>>& subspaces,
-                                const std::vector<size_t>& nodes, Random& rng, const ShortcutSettings& shortcuts) {
+                                const std::vector<size_t>& nodes, Random& rng,
+                                const ShortcutSettings& shortcuts) {
   CertifiedMotion m;
   Stopwatch build;
   auto w = graphPathMotion(graph, subspaces, nodes, startConfig(scene), goalConfig(scene));

@@ -17,10 +17,9 @@ namespace mms {
 /// one subspace meet at (line point, slice angle); where the path crosses to another subspace,
 /// the robot that moved stops at the pose the next subspace holds it at, and the other robot
 /// moves next. Returns nothing if a route inside a cell cannot be found.
-std::optional<std::vector<Config>> graphPathMotion(const ConnectivityGraph& graph,
-                                                   const std::vector<std::unique_ptr<Subspace>>& subspaces,
-                                                   const std::vector<size_t>& nodes, const Config& start,
-                                                   const Config& goal);
+std::optional<std::vector<Config>> graphPathMotion(
+    const ConnectivityGraph& graph, const std::vector<std::unique_ptr<Subspace>>& subspaces,
+    const std::vector<size_t>& nodes, const Config& start, const Config& goal);
 
 /// A graph path turned into a reported motion: built, shortened by shortcuts, and certified by
 /// the path checker against the scene's start and goal. `ok` only if all three succeeded.
@@ -34,9 +33,11 @@ struct ShortcutSettings {
   size_t attempts = 200;
   bool oneRobotAtATime = false;
 };
-CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& checker, const ConnectivityGraph& graph,
+CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& checker,
+                                const ConnectivityGraph& graph,
                                 const std::vector<std::unique_ptr<Subspace>>& subspaces,
-                                const std::vector<size_t>& nodes, Random& rng, const ShortcutSettings& shortcuts);
+                                const std::vector<size_t>& nodes, Random& rng,
+                                const ShortcutSettings& shortcuts);
 
 /// Random shortcuts: replaces the stretch between two waypoints by the straight motion when the
 /// checker certifies it. Bounded by attempts, not time, so a seed fixes the result. With

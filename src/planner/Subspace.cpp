@@ -5,7 +5,8 @@
 namespace mms {
 
 namespace {
-std::vector<Ring> placedRings(const Scene& scene, const std::vector<std::pair<size_t, Pose>>& held) {
+std::vector<Ring> placedRings(const Scene& scene,
+                              const std::vector<std::pair<size_t, Pose>>& held) {
   std::vector<Ring> out;
   for (const auto& [robot, pose] : held) {
     Ring r;
@@ -17,7 +18,8 @@ std::vector<Ring> placedRings(const Scene& scene, const std::vector<std::pair<si
 }  // namespace
 
 Subspace::Subspace(uint32_t id, const Scene& scene, const CollisionChecker& checker, size_t moving,
-                   std::vector<std::pair<size_t, Pose>> held, ConnectivityGraph& graph, SubspaceStats& stats)
+                   std::vector<std::pair<size_t, Pose>> held, ConnectivityGraph& graph,
+                   SubspaceStats& stats)
     : id_(id),
       checker_(checker),
       moving_(moving),
@@ -48,7 +50,8 @@ size_t Subspace::addSlice(const Slice& base) {
   const size_t k = slices_.size() - 1;
   std::vector<size_t> nodes;
   for (size_t f = 0; f < slices_[k].fscCount(); ++f)
-    nodes.push_back(graph_.addNode({ConnectivityGraph::Kind::SliceCell, id_, uint32_t(k), uint32_t(f)}));
+    nodes.push_back(
+        graph_.addNode({ConnectivityGraph::Kind::SliceCell, id_, uint32_t(k), uint32_t(f)}));
   sliceNodes_.push_back(std::move(nodes));
   ++stats_.slices;
   stats_.sliceCells += slices_[k].fscCount();
@@ -61,12 +64,14 @@ size_t Subspace::addSlice(const Slice& base) {
 
 size_t Subspace::addLine(Vec2 p) {
   Stopwatch watch;
-  lines_.emplace_back(lineWorld_, [this](const Pose& q) { return free(q); }, p, &stats_.lineStats);
+  lines_.emplace_back(
+      lineWorld_, [this](const Pose& q) { return free(q); }, p, &stats_.lineStats);
   stats_.lineSeconds += watch.seconds();
   const size_t l = lines_.size() - 1;
   std::vector<size_t> nodes;
   for (size_t a = 0; a < lines_[l].arcs().size(); ++a)
-    nodes.push_back(graph_.addNode({ConnectivityGraph::Kind::LineArc, id_, uint32_t(l), uint32_t(a)}));
+    nodes.push_back(
+        graph_.addNode({ConnectivityGraph::Kind::LineArc, id_, uint32_t(l), uint32_t(a)}));
   lineNodes_.push_back(std::move(nodes));
   ++stats_.lines;
   stats_.lineArcs += lines_[l].arcs().size();

@@ -23,7 +23,8 @@ class Subspace {
  public:
   /// Robot `moving` of `scene` moves; each (robot, pose) in `held` stays put as an obstacle.
   Subspace(uint32_t id, const Scene& scene, const CollisionChecker& checker, size_t moving,
-           std::vector<std::pair<size_t, Pose>> held, ConnectivityGraph& graph, SubspaceStats& stats);
+           std::vector<std::pair<size_t, Pose>> held, ConnectivityGraph& graph,
+           SubspaceStats& stats);
 
   uint32_t id() const { return id_; }
   size_t moving() const { return moving_; }

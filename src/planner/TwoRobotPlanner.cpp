@@ -14,7 +14,8 @@ TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
     angles_[r] = std::make_unique<AngleSequence>(settings_.nTheta, rng_.uniform(0, 2 * M_PI));
     if (translates_[r]) {
       Stopwatch watch;
-      base_[r].emplace_back(*worlds_[r], exact::rationalAngleNear(scene_.robots[r].start.theta, 30));
+      base_[r].emplace_back(*worlds_[r],
+                            exact::rationalAngleNear(scene_.robots[r].start.theta, 30));
       stats_.baseSliceSeconds += watch.seconds();
     } else {
       addAngles(r, settings_.nTheta, Termination(1e9));
@@ -27,7 +28,8 @@ TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
 void TwoRobotPlanner::addAngles(size_t robot, size_t count, const Termination& stop) {
   for (size_t i = 0; i < count && !stop(); ++i) {
     Stopwatch watch;
-    base_[robot].emplace_back(*worlds_[robot], exact::rationalAngleNear(angles_[robot]->next(), 30));
+    base_[robot].emplace_back(*worlds_[robot],
+                              exact::rationalAngleNear(angles_[robot]->next(), 30));
     stats_.baseSliceSeconds += watch.seconds();
     for (auto& sub : subspaces_)
       if (sub->moving() == robot && !stop()) sub->addSlice(base_[robot].back());
@@ -43,7 +45,8 @@ bool TwoRobotPlanner::sampleFixing(size_t robot, Fixing& out) {
     const size_t k = rng_.below(base_[robot].size());
     const Vec2 p{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)};
     if (base_[robot][k].locate(p) < 0) continue;
-    const double theta = translates_[robot] ? scene_.robots[robot].start.theta : base_[robot][k].theta();
+    const double theta =
+        translates_[robot] ? scene_.robots[robot].start.theta : base_[robot][k].theta();
     out = {robot, {p.x, p.y, theta}, long(k), -1};
     return true;
   }
@@ -68,9 +71,9 @@ long TwoRobotPlanner::nodeFor(const Subspace& sub, const Fixing& f) const {
 
 void TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop) {
   const size_t moving = 1 - held.robot;
-  subspaces_.push_back(std::make_unique<Subspace>(uint32_t(subspaces_.size()), scene_, checker_, moving,
-                                                  std::vector<std::pair<size_t, Pose>>{{held.robot, held.pose}},
-                                                  graph_, stats_.manifolds));
+  subspaces_.push_back(std::make_unique<Subspace>(
+      uint32_t(subspaces_.size()), scene_, checker_, moving,
+      std::vector<std::pair<size_t, Pose>>{{held.robot, held.pose}}, graph_, stats_.manifolds));
   fixings_.push_back(held);
   ++stats_.subspaces;
   ++stats_.fixings[held.robot];
@@ -156,7 +159,9 @@ TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
       ++stats_.rejectedPaths;
     }
     if (progress) progress(finish(result, MmsResult::Status::NotFound).stats);
-    if (stop()) return finish(result, stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
+    if (stop())
+      return finish(result,
+                    stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
     // Grow both the fixings and the angle sets: a narrow passage may need the two robots'
     // angles closer than the current sets offer (the Pacman's mouth and the square).
     target *= 2;

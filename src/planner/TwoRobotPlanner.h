@@ -40,7 +40,8 @@ struct TwoRobotStats {
   size_t pathCells = 0, rejectedPaths = 0;
   std::array<size_t, 2> fixings{0, 0};
   SubspaceStats manifolds;  // slices, lines, cells, arcs over all subspaces
-  double baseSliceSeconds = 0, crossSeconds = 0, searchSeconds = 0, motionSeconds = 0, certifySeconds = 0;
+  double baseSliceSeconds = 0, crossSeconds = 0, searchSeconds = 0, motionSeconds = 0,
+         certifySeconds = 0;
   double totalSeconds = 0;
 };
 
@@ -56,7 +57,8 @@ class TwoRobotPlanner {
   explicit TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings = {});
   ~TwoRobotPlanner();
 
-  TwoRobotResult solve(const Termination& stop, const std::function<void(const TwoRobotStats&)>& progress = {});
+  TwoRobotResult solve(const Termination& stop,
+                       const std::function<void(const TwoRobotStats&)>& progress = {});
 
  private:
   struct Fixing {
@@ -79,8 +81,9 @@ class TwoRobotPlanner {
   std::array<bool, 2> translates_;
   std::array<std::unique_ptr<SliceWorld>, 2> worlds_;
   std::array<std::unique_ptr<AngleSequence>, 2> angles_;
-  std::array<std::vector<Slice>, 2> base_;  // per robot: its slice at each of its angles, obstacles only
-  std::vector<Fixing> fixings_;             // fixings_[i] is held in subspaces_[i]
+  std::array<std::vector<Slice>, 2>
+      base_;                     // per robot: its slice at each of its angles, obstacles only
+  std::vector<Fixing> fixings_;  // fixings_[i] is held in subspaces_[i]
   std::vector<std::unique_ptr<Subspace>> subspaces_;
   ConnectivityGraph graph_;
   TwoRobotStats stats_;

@@ -20,11 +20,20 @@ std::string escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -96,12 +105,14 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
   svg << "<rect x=\"" << fmt(b.xmin) << "\" y=\"" << fmt(b.ymin) << "\" width=\"" << fmt(b.width())
       << "\" height=\"" << fmt(b.height()) << "\" fill=\"#f4f4f0\" stroke=\"#333\" stroke-width=\""
       << fmt(2 * stroke) << "\"/>\n";
-  svg << "<g id=\"obstacles\" fill=\"#4a74b4\" stroke=\"#23406e\" stroke-width=\"" << fmt(stroke) << "\">\n";
+  svg << "<g id=\"obstacles\" fill=\"#4a74b4\" stroke=\"#23406e\" stroke-width=\"" << fmt(stroke)
+      << "\">\n";
   for (const Ring& ob : scene.obstacles) svg << "<polygon points=\"" << points(ob) << "\"/>\n";
   svg << "</g>\n";
 
   if (!o.regions.empty()) {
-    svg << "<g id=\"cells\" fill=\"#7fbf7f\" fill-opacity=\"0.12\" fill-rule=\"evenodd\" stroke=\"#2e7d32\" "
+    svg << "<g id=\"cells\" fill=\"#7fbf7f\" fill-opacity=\"0.12\" fill-rule=\"evenodd\" "
+           "stroke=\"#2e7d32\" "
         << "stroke-opacity=\"0.6\" stroke-width=\"" << fmt(0.5 * stroke) << "\">\n";
     for (const std::vector<Ring>& region : o.regions) {
       svg << "<path d=\"";
@@ -113,7 +124,8 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
   if (!o.markers.empty()) {
     svg << "<g id=\"markers\" fill=\"#555\" fill-opacity=\"0.6\">\n";
     for (Vec2 m : o.markers)
-      svg << "<circle cx=\"" << fmt(m.x) << "\" cy=\"" << fmt(m.y) << "\" r=\"" << fmt(1.5 * stroke) << "\"/>\n";
+      svg << "<circle cx=\"" << fmt(m.x) << "\" cy=\"" << fmt(m.y) << "\" r=\"" << fmt(1.5 * stroke)
+          << "\"/>\n";
     svg << "</g>\n";
   }
 
@@ -126,25 +138,32 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
       svg << "<polyline fill=\"none\" stroke=\"" << kTraceColours[i % 6] << "\" stroke-width=\""
           << fmt(stroke) << "\" stroke-dasharray=\"" << fmt(3 * stroke) << " " << fmt(2 * stroke)
           << "\" points=\"";
-      for (const Config& q : path->waypoints) svg << fmt(q[3 * i]) << "," << fmt(q[3 * i + 1]) << " ";
+      for (const Config& q : path->waypoints)
+        svg << fmt(q[3 * i]) << "," << fmt(q[3 * i + 1]) << " ";
       svg << "\"/>\n";
     }
     // Ghost poses evenly spaced by motion.
-    svg << "<g id=\"ghosts\" fill=\"#888\" fill-opacity=\"0.08\" stroke=\"#555\" stroke-opacity=\"0.35\" "
+    svg << "<g id=\"ghosts\" fill=\"#888\" fill-opacity=\"0.08\" stroke=\"#555\" "
+           "stroke-opacity=\"0.35\" "
         << "stroke-width=\"" << fmt(0.6 * stroke) << "\">\n";
     for (int g = 1; g < o.ghosts && total > 0; ++g)
       for (size_t i = 0; i < k; ++i)
         svg << "<polygon points=\""
-            << points(placed(scene.robots[i].shape, poseAtEffort(*path, acc, i, total * g / o.ghosts)))
+            << points(
+                   placed(scene.robots[i].shape, poseAtEffort(*path, acc, i, total * g / o.ghosts)))
             << "\"/>\n";
     svg << "</g>\n";
   }
-  svg << "<g id=\"starts\" fill=\"#2ca02c\" fill-opacity=\"0.55\" stroke=\"#1a631a\" stroke-width=\""
+  svg << "<g id=\"starts\" fill=\"#2ca02c\" fill-opacity=\"0.55\" stroke=\"#1a631a\" "
+         "stroke-width=\""
       << fmt(stroke) << "\">\n";
-  for (const Robot& r : scene.robots) svg << "<polygon points=\"" << points(placed(r.shape, r.start)) << "\"/>\n";
-  svg << "</g>\n<g id=\"goals\" fill=\"#d62728\" fill-opacity=\"0.55\" stroke=\"#7f1516\" stroke-width=\""
+  for (const Robot& r : scene.robots)
+    svg << "<polygon points=\"" << points(placed(r.shape, r.start)) << "\"/>\n";
+  svg << "</g>\n<g id=\"goals\" fill=\"#d62728\" fill-opacity=\"0.55\" stroke=\"#7f1516\" "
+         "stroke-width=\""
       << fmt(stroke) << "\">\n";
-  for (const Robot& r : scene.robots) svg << "<polygon points=\"" << points(placed(r.shape, r.goal)) << "\"/>\n";
+  for (const Robot& r : scene.robots)
+    svg << "<polygon points=\"" << points(placed(r.shape, r.goal)) << "\"/>\n";
   svg << "</g>\n";
 
   if (path && !path->waypoints.empty() && o.animate) {
@@ -152,8 +171,7 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
     const double total = acc.back();
     const double dur = std::clamp(total / extent * o.secondsPerExtent, 2.0, 120.0);
     std::string keyTimes;
-    for (size_t j = 0; j < acc.size(); ++j)
-    {
+    for (size_t j = 0; j < acc.size(); ++j) {
       if (j) keyTimes += ';';
       keyTimes += fmt(total > 0 ? acc[j] / total : double(j) / std::max<size_t>(1, acc.size() - 1));
     }

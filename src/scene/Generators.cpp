@@ -29,7 +29,8 @@ Scene randomPolygonsScene(const RandomPolygonsSettings& s) {
   for (int k = 0; k < s.obstacles; ++k) {
     const Vec2 c{-s.extent + (k % side + 0.5) * cell + rng.uniform(-0.1, 0.1) * cell,
                  -s.extent + (k / side + 0.5) * cell + rng.uniform(-0.1, 0.1) * cell};
-    scene.obstacles.push_back(randomStarPolygon(rng, c, 0.12 * cell, 0.32 * cell, s.obstacleVertices));
+    scene.obstacles.push_back(
+        randomStarPolygon(rng, c, 0.12 * cell, 0.32 * cell, s.obstacleVertices));
   }
   // Grid corners lie between obstacles: free for robots this small.
   const double lo = -s.extent + cell, hi = s.extent - cell;
@@ -60,7 +61,9 @@ Scene randomPolygonsTwoRobots(uint64_t seed) {
 
 namespace {
 
-Ring rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+Ring rect(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
 
 // A ring of outer radius R and inner radius r with a slot of width w cut along +x: the
 // Pacman. Counter-clockwise: the outer arc one way, the inner arc back.
@@ -108,10 +111,11 @@ Scene vikingHelmetScene() {
   s.name = "viking-helmet";
   s.bounds = {0, 0, 20, 14};
   s.obstacles = {
-      rect(0, 0, 20, 1), rect(0, 0, 1, 14), rect(19, 0, 20, 14), rect(0, 13, 20, 14),  // shell
-      rect(1, 5, 3.05, 9), rect(3.95, 5, 16.05, 9), rect(16.95, 5, 19, 9),              // passages
-      rect(6, 9, 14, 13),                                                                // between the horns
-      rect(8, 1, 12, 4),                                                                 // pillar
+      rect(0, 0, 20, 1),   rect(0, 0, 1, 14),       rect(19, 0, 20, 14),
+      rect(0, 13, 20, 14),                                                  // shell
+      rect(1, 5, 3.05, 9), rect(3.95, 5, 16.05, 9), rect(16.95, 5, 19, 9),  // passages
+      rect(6, 9, 14, 13),                                                   // between the horns
+      rect(8, 1, 12, 4),                                                    // pillar
   };
   Robot a, b;
   a.name = "left";

@@ -8,15 +8,22 @@ namespace mms::json_in {
 
 const char* typeName(const Json& j) {
   switch (j.type()) {
-    case Json::value_t::null: return "null";
-    case Json::value_t::object: return "an object";
-    case Json::value_t::array: return "an array";
-    case Json::value_t::string: return "a string";
-    case Json::value_t::boolean: return "a boolean";
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::object:
+      return "an object";
+    case Json::value_t::array:
+      return "an array";
+    case Json::value_t::string:
+      return "a string";
+    case Json::value_t::boolean:
+      return "a boolean";
     case Json::value_t::number_integer:
     case Json::value_t::number_unsigned:
-    case Json::value_t::number_float: return "a number";
-    default: return "an unsupported value";
+    case Json::value_t::number_float:
+      return "a number";
+    default:
+      return "an unsupported value";
   }
 }
 
@@ -46,8 +53,8 @@ Json parseText(const std::string& text, const std::string& source) {
   try {
     return Json::parse(text, limitDepth);
   } catch (const TooDeep&) {
-    throw InputError(source + ": (document): JSON nested deeper than " +
-                     std::to_string(kMaxDepth) + " levels");
+    throw InputError(source + ": (document): JSON nested deeper than " + std::to_string(kMaxDepth) +
+                     " levels");
   } catch (const Json::exception& e) {  // syntax errors, and numbers beyond double range
     throw InputError(source + ": (document): not valid JSON: " + cleanParseMessage(e.what()));
   }
@@ -106,8 +113,11 @@ size_t Node::arraySize(size_t minSize, size_t maxSize) const {
   if (!v_->is_array()) fail(std::string("expected an array, found ") + typeName(*v_));
   const size_t n = v_->size();
   if (n < minSize || n > maxSize) {
-    if (minSize == maxSize) fail("expected " + std::to_string(minSize) + " elements, found " + std::to_string(n));
-    if (n < minSize) fail("expected at least " + std::to_string(minSize) + " elements, found " + std::to_string(n));
+    if (minSize == maxSize)
+      fail("expected " + std::to_string(minSize) + " elements, found " + std::to_string(n));
+    if (n < minSize)
+      fail("expected at least " + std::to_string(minSize) + " elements, found " +
+           std::to_string(n));
     fail("too many elements (" + std::to_string(n) + ", at most " + std::to_string(maxSize) + ")");
   }
   return n;

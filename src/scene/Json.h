@@ -4,8 +4,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "scene/Errors.h"
 #include "geometry/Vec2.h"
+#include "scene/Errors.h"
 
 namespace mms::json_in {
 

@@ -38,7 +38,8 @@ Path parsePath(const nlohmann::json& doc, const std::string& source, const Scene
     path.waypoints.push_back(std::move(q));
   }
   for (auto it = doc.begin(); it != doc.end(); ++it)
-    if (it.key() != "format" && it.key() != "scene" && it.key() != "robots" && it.key() != "waypoints")
+    if (it.key() != "format" && it.key() != "scene" && it.key() != "robots" &&
+        it.key() != "waypoints")
       path.extra[it.key()] = it.value();
   return path;
 }

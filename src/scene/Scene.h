@@ -24,7 +24,9 @@ struct Scene {
   std::vector<Robot> robots;
 
   /// Contacts up to this depth count as touching, not colliding (see docs/formats.md).
-  double tolerance() const { return kRelativeTolerance * std::max(bounds.width(), bounds.height()); }
+  double tolerance() const {
+    return kRelativeTolerance * std::max(bounds.width(), bounds.height());
+  }
   static constexpr double kRelativeTolerance = 1e-6;
 
   /// Number of coordinates of a full configuration (x, y, theta per robot).

@@ -3,8 +3,8 @@
 #include <set>
 
 #include "geometry/CollisionChecker.h"
-#include "geometry/Predicates.h"
 #include "geometry/PolygonOps.h"
+#include "geometry/Predicates.h"
 #include "scene/Json.h"
 #include "util/AtomicFile.h"
 
@@ -59,9 +59,12 @@ Robot readRobot(const Node& node, size_t index) {
   r.goal = readPose(node["goal"]);
   if (node.has("motion")) {
     const std::string m = node["motion"].string();
-    if (m == "rigid") r.motion = Motion::Rigid;
-    else if (m == "translate") r.motion = Motion::Translate;
-    else node["motion"].fail("unknown motion kind '" + m + "' (expected rigid or translate)");
+    if (m == "rigid")
+      r.motion = Motion::Rigid;
+    else if (m == "translate")
+      r.motion = Motion::Translate;
+    else
+      node["motion"].fail("unknown motion kind '" + m + "' (expected rigid or translate)");
   }
   if (r.motion == Motion::Translate && r.goal.theta != r.start.theta)
     node["goal"][size_t(2)].fail("a translate robot keeps its angle: goal angle " +
@@ -105,8 +108,9 @@ Scene parseScene(const nlohmann::json& doc, const std::string& source) {
 
   const Node b = root["bounds"];
   b.arraySize(4, 4);
-  scene.bounds = {b[size_t(0)].number(json_in::kMaxCoordinate), b[size_t(1)].number(json_in::kMaxCoordinate),
-                  b[size_t(2)].number(json_in::kMaxCoordinate), b[size_t(3)].number(json_in::kMaxCoordinate)};
+  scene.bounds = {
+      b[size_t(0)].number(json_in::kMaxCoordinate), b[size_t(1)].number(json_in::kMaxCoordinate),
+      b[size_t(2)].number(json_in::kMaxCoordinate), b[size_t(3)].number(json_in::kMaxCoordinate)};
   if (!(scene.bounds.xmin < scene.bounds.xmax) || !(scene.bounds.ymin < scene.bounds.ymax))
     b.fail("bounds are inverted or empty (need xmin < xmax and ymin < ymax)");
 
