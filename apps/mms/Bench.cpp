@@ -269,8 +269,6 @@ int bench(const BenchArgs& a) {
         if (WEXITSTATUS(status) == 3)
           rec.status = "crashed", rec.detail = "internal error or out of memory";
       }
-      if (rec.status == "not_found" || rec.status == "killed" || rec.status == "crashed")
-        rec.seconds = std::max(rec.seconds, 0.0);
       out << rec.toJson().dump() << "\n" << std::flush;
       ++finished;
       std::fprintf(stderr, "mms bench: [%zu/%zu] %s %s seed %llu: %s %.3f s\n", finished + skipped,

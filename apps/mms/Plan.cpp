@@ -82,6 +82,18 @@ std::string numbered(const std::string& path, size_t i) {
 
 namespace {
 
+void printFound(const std::string& label, const Path& path, const PathCheckResult& c) {
+  std::printf(
+      "%s: path found and certified: %zu waypoints, translation %.4g, rotation %.4g rad, min "
+      "clearance %.3g\n",
+      label.c_str(), path.waypoints.size(), c.translation, c.rotation, c.minClearance);
+}
+
+void printNotFound(const std::string& label, double timeLimit, MmsResult::Status status) {
+  std::printf("%s: no path found within %.3g s (%s)\n", label.c_str(), timeLimit,
+              status == MmsResult::Status::Cancelled ? "interrupted" : "time limit");
+}
+
 void writeStats(const PlanArgs& a, const nlohmann::json& j) {
   if (!a.statsJson.empty()) writeFileAtomically(a.statsJson, j.dump(1) + "\n");
 }
@@ -216,8 +228,7 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
   if (res.status == MmsResult::Status::Found) addPath(j, res.certificate, res.waypoints.size());
   writeStats(a, j);
   if (res.status != MmsResult::Status::Found) {
-    std::printf("%s: no path found within %.3g s (%s)\n", a.scene.c_str(), a.timeLimit,
-                res.status == MmsResult::Status::Cancelled ? "interrupted" : "time limit");
+    printNotFound(a.scene, a.timeLimit, res.status);
     printTwoRobotStats(res.stats);
     return 1;
   }
@@ -239,11 +250,7 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
                   {"path_cells", st.pathCells}}}};
   if (!a.output.empty()) savePath(path, scene, a.output);
   if (!a.svg.empty()) writeFileAtomically(a.svg, renderSvg(scene, &path));
-  std::printf(
-      "%s: path found and certified: %zu waypoints, translation %.4g, rotation %.4g rad, min "
-      "clearance %.3g\n",
-      a.scene.c_str(), path.waypoints.size(), res.certificate.translation, res.certificate.rotation,
-      res.certificate.minClearance);
+  printFound(a.scene, path, res.certificate);
   printTwoRobotStats(st);
   return 0;
 }
@@ -302,8 +309,7 @@ int plan(const PlanArgs& a) {
     if (res.status == MmsResult::Status::Found) addPath(j, res.certificate, res.waypoints.size());
     summaries.push_back(j);
     if (res.status != MmsResult::Status::Found) {
-      std::printf("%s: no path found within %.3g s (%s)\n", label.c_str(), a.timeLimit,
-                  res.status == MmsResult::Status::Cancelled ? "interrupted" : "time limit");
+      printNotFound(label, a.timeLimit, res.status);
       printStats(res.stats);
       exitCode = 1;
       continue;
@@ -333,11 +339,7 @@ int plan(const PlanArgs& a) {
       }
       writeFileAtomically(many ? numbered(a.svg, qi) : a.svg, renderSvg(queryScene, &path, o));
     }
-    std::printf(
-        "%s: path found and certified: %zu waypoints, translation %.4g, rotation %.4g rad, min "
-        "clearance %.3g\n",
-        label.c_str(), path.waypoints.size(), res.certificate.translation, res.certificate.rotation,
-        res.certificate.minClearance);
+    printFound(label, path, res.certificate);
     printStats(st);
   }
   writeStats(a, summaries.size() == 1 ? summaries[0] : summaries);

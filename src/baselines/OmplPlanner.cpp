@@ -153,6 +153,10 @@ ob::PlannerPtr makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings
     si->setValidStateSamplerAllocator(std::move(alloc));
     return prm();
   };
+  auto withRange = [&](auto p) -> ob::PlannerPtr {
+    if (s.range > 0) p->setRange(s.range);
+    return p;
+  };
   if (n == "prm") return prm();
   if (n == "obprm")
     return withSampler([](const ob::SpaceInformation* i) {
@@ -173,31 +177,11 @@ ob::PlannerPtr makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings
       return std::make_shared<UobprmSampler>(i, length, step);
     });
   }
-  if (n == "rrt") {
-    auto p = std::make_shared<og::RRT>(si);
-    if (s.range > 0) p->setRange(s.range);
-    return p;
-  }
-  if (n == "rrtconnect") {
-    auto p = std::make_shared<og::RRTConnect>(si);
-    if (s.range > 0) p->setRange(s.range);
-    return p;
-  }
-  if (n == "kpiece") {
-    auto p = std::make_shared<og::KPIECE1>(si);
-    if (s.range > 0) p->setRange(s.range);
-    return p;
-  }
-  if (n == "bkpiece") {
-    auto p = std::make_shared<og::BKPIECE1>(si);
-    if (s.range > 0) p->setRange(s.range);
-    return p;
-  }
-  if (n == "lazyprm") {
-    auto p = std::make_shared<og::LazyPRM>(si);
-    if (s.range > 0) p->setRange(s.range);
-    return p;
-  }
+  if (n == "rrt") return withRange(std::make_shared<og::RRT>(si));
+  if (n == "rrtconnect") return withRange(std::make_shared<og::RRTConnect>(si));
+  if (n == "kpiece") return withRange(std::make_shared<og::KPIECE1>(si));
+  if (n == "bkpiece") return withRange(std::make_shared<og::BKPIECE1>(si));
+  if (n == "lazyprm") return withRange(std::make_shared<og::LazyPRM>(si));
   throw std::invalid_argument("unknown planner '" + n + "'");
 }
 
