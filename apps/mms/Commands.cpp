@@ -81,6 +81,10 @@ int scenario(const ScenarioArgs& a) {
     s = pacmanScene(a.tightness);
   else if (a.name == "viking-helmet")
     s = vikingHelmetScene();
+  else if (a.name == "assembly-1")
+    s = assemblyOneScene(a.slack);
+  else if (a.name == "assembly-2")
+    s = assemblyTwoScene(a.slack, a.mPartsOnly);
   else
     s = randomPolygonsTwoRobots(a.seed);
   // The generators must produce valid scenes: validate before writing.

@@ -38,6 +38,7 @@ struct PlanArgs {
   uint64_t seed = 1;
   double timeLimit = 60;
   size_t nTheta = 0, nLines = 0, nFixings = 0;  // 0: the planner's default
+  double expandShare = -1;                      // < 0: the planner's default
   bool quiet = false;
   bool svgRoadmap = false;  // draw line points and the path's slice cells
   std::string queries;      // mms-queries/1 file: several queries on one roadmap
@@ -57,6 +58,8 @@ struct ScenarioArgs {
   std::string name, output;
   double tightness = 0;
   uint64_t seed = 1;
+  double slack = 0.05;
+  bool mPartsOnly = false;
 };
 int scenario(const ScenarioArgs& a);
 
@@ -74,5 +77,17 @@ struct BenchArgs {
 };
 int bench(const BenchArgs& a);
 int benchMerge(const std::vector<std::string>& dirs, const std::string& output);
+
+}  // namespace mms::cli
+
+namespace mms::cli {
+
+struct AssembleArgs {
+  std::string scene, output, svg;
+  uint64_t seed = 1;
+  double timeLimit = 60;
+  bool noPairs = false, quiet = false;
+};
+int assemble(const AssembleArgs& a);
 
 }  // namespace mms::cli

@@ -199,6 +199,7 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
   if (a.nTheta) settings.nTheta = a.nTheta;
   if (a.nLines) settings.nLines = a.nLines;
   if (a.nFixings) settings.nFixings = a.nFixings;
+  if (a.expandShare >= 0) settings.expandShare = a.expandShare;
   TwoRobotPlanner planner(scene, settings);
   Stopwatch clock;
   auto progress = [&](const TwoRobotStats& s) {
@@ -215,8 +216,10 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
   const TwoRobotStats& ts = res.stats;
   j["graph_nodes"] = ts.graphNodes;
   j["graph_edges"] = ts.graphEdges;
-  j["parameters"] = {
-      {"n_theta", settings.nTheta}, {"n_lines", settings.nLines}, {"n_fixings", settings.nFixings}};
+  j["parameters"] = {{"n_theta", settings.nTheta},
+                     {"n_lines", settings.nLines},
+                     {"n_fixings", settings.nFixings},
+                     {"expand_share", settings.expandShare}};
   j["manifolds"] = {{"subspaces", ts.subspaces},
                     {"slices", ts.manifolds.slices},
                     {"lines", ts.manifolds.lines},
@@ -240,7 +243,8 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
                 {"parameters",
                  {{"n_theta", settings.nTheta},
                   {"n_lines", settings.nLines},
-                  {"n_fixings", settings.nFixings}}},
+                  {"n_fixings", settings.nFixings},
+                  {"expand_share", settings.expandShare}}},
                 {"statistics",
                  {{"subspaces", st.subspaces},
                   {"slices", st.manifolds.slices},

@@ -92,6 +92,11 @@ int main(int argc, char** argv) {
           "--n-fixings", pa.nFixings,
           "Two robots: fixings per robot in the first round (n_f), doubling each round (default 8)")
       ->check(CLI::Range(1, 1000000));
+  planCmd
+      ->add_option("--expand-share", pa.expandShare,
+                   "Two robots: share of fixings drawn from free-space cells already reached from "
+                   "the start or goal (default 0.5; the rest are uniform)")
+      ->check(CLI::Range(0.0, 1.0));
   planCmd->add_flag("-q,--quiet", pa.quiet, "No progress messages on stderr");
   std::vector<std::string> plannerNames{"mms"};
   for (const std::string& n : mms::omplPlannerNames()) plannerNames.push_back(n);
@@ -136,10 +141,13 @@ int main(int argc, char** argv) {
   auto* scenarioCmd = app.add_subcommand(
       "scenario",
       "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
-      "random-polygons (--seed)");
-  scenarioCmd->add_option("NAME", sa.name, "pacman, viking-helmet or random-polygons")
+      "random-polygons (--seed), assembly-1 and assembly-2 (--slack)");
+  scenarioCmd
+      ->add_option("NAME", sa.name,
+                   "pacman, viking-helmet, random-polygons, assembly-1 or assembly-2")
       ->required()
-      ->check(CLI::IsMember({"pacman", "viking-helmet", "random-polygons"}));
+      ->check(CLI::IsMember(
+          {"pacman", "viking-helmet", "random-polygons", "assembly-1", "assembly-2"}));
   scenarioCmd->add_option("-o,--output", sa.output, "Scene file to write")->required();
   scenarioCmd
       ->add_option("--tightness", sa.tightness,
@@ -148,6 +156,35 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 0.999));
   scenarioCmd->add_option("--seed", sa.seed, "random-polygons: the seed of the geometry")
       ->capture_default_str();
+  scenarioCmd
+      ->add_option("--slack", sa.slack,
+                   "assembly-1/2: the play between parts and walls (the smaller, the tighter)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.001, 0.15));
+  scenarioCmd->add_flag("--m-parts-only", sa.mPartsOnly,
+                        "assembly-2: only the two M parts, with goals outside (the 4-D problem "
+                        "left once the triangles are out)");
+
+  AssembleArgs aa;
+  auto* assembleCmd = app.add_subcommand(
+      "assemble",
+      "Three-handed disassembly: remove every part (robot) from the static part (the obstacles),\n"
+      "one part or two at a time while the others stay put. Parts whose goal equals their start\n"
+      "leave the obstacles' bounding box; the others go to their goals. Writes "
+      "DIR/step-K.scene.json\n"
+      "and step-K.path.json per step, DIR/disassembly.{scene,path}.json (the whole motion, "
+      "certified)\n"
+      "and DIR/disassembly.json (the sequence). Exit 1 when parts remain stuck.");
+  assembleCmd->add_option("SCENE", aa.scene, "Scene file (mms-scene/1)")->required();
+  assembleCmd->add_option("-o,--output", aa.output, "Directory for the files")->required();
+  assembleCmd->add_option("--svg", aa.svg, "Write an animated SVG of the whole disassembly");
+  assembleCmd->add_option("--seed", aa.seed, "Random seed")->capture_default_str();
+  assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e7));
+  assembleCmd->add_flag("--no-pairs", aa.noPairs,
+                        "Two hands only: move one part at a time (exact for translating parts)");
+  assembleCmd->add_flag("-q,--quiet", aa.quiet, "No progress messages on stderr");
 
   BenchArgs ba;
   std::string plannersList =
@@ -219,6 +256,7 @@ int main(int argc, char** argv) {
     if (*renderCmd) return render(ra);
     if (*planCmd) return plan(pa);
     if (*scenarioCmd) return scenario(sa);
+    if (*assembleCmd) return assemble(aa);
     if (*benchCmd) {
       ba.planners.clear();
       for (const std::string& p : split(plannersList, ',')) {

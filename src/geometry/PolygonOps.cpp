@@ -70,12 +70,15 @@ bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return withinBox(a, b, c) || withinBox(a, b, d) || withinBox(c, d, a) || withinBox(c, d, b);
 }
 
-double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
+Vec2 closestPointOnSegment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double len2 = dot(ab, ab);
-  double t = len2 > 0 ? dot(p - a, ab) / len2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return norm(p - (a + t * ab));
+  const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return a + t * ab;
+}
+
+double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
+  return norm(p - closestPointOnSegment(p, a, b));
 }
 
 double segmentSegmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {

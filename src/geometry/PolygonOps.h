@@ -22,6 +22,7 @@ bool insideRing(const Ring& ring, Vec2 p);
 bool segmentsIntersect(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
 double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b);
+Vec2 closestPointOnSegment(Vec2 p, Vec2 a, Vec2 b);
 double segmentSegmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
 /// Distance between two closed polygons (0 when they intersect or one contains the other).

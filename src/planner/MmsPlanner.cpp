@@ -30,11 +30,13 @@ MmsPlanner::MmsPlanner(const Scene& scene, size_t robot, MmsSettings settings)
     : scene_(singleRobotScene(scene, robot)),
       settings_(settings),
       checker_(scene_),
-      sliceWorld_(scene_, 0),
+      contactScene_(withContactShapes(scene_, checker_)),
+      sliceWorld_(contactScene_, 0),
       rng_(settings.seed),
       angles_(settings.nTheta, rng_.uniform(0, 2 * M_PI)) {
-  subspaces_.push_back(std::make_unique<Subspace>(
-      0, scene_, checker_, 0, std::vector<std::pair<size_t, Pose>>{}, graph_, stats_.manifolds));
+  subspaces_.push_back(std::make_unique<Subspace>(0, contactScene_, checker_, 0,
+                                                  std::vector<std::pair<size_t, Pose>>{}, graph_,
+                                                  stats_.manifolds));
 }
 
 MmsPlanner::~MmsPlanner() = default;

@@ -83,6 +83,7 @@ class MmsPlanner {
   Scene scene_;  // a one-robot copy: the planned robot only
   MmsSettings settings_;
   CollisionChecker checker_;
+  Scene contactScene_;  // the robot shrunk as the checker sees it: manifolds are built for it
   SliceWorld sliceWorld_;
   Random rng_;
   AngleSequence angles_;

@@ -17,6 +17,15 @@ std::vector<Ring> placedRings(const Scene& scene,
 }
 }  // namespace
 
+Scene withContactShapes(const Scene& scene, const CollisionChecker& checker) {
+  Scene out = scene;
+  for (Robot& r : out.robots) {
+    ShrunkShape s = shrinkForContacts(r.shape, checker.tolerance() / 2);
+    if (!s.error) r.shape = std::move(s.ring);  // shrinking by delta worked, so half does too
+  }
+  return out;
+}
+
 Subspace::Subspace(uint32_t id, const Scene& scene, const CollisionChecker& checker, size_t moving,
                    std::vector<std::pair<size_t, Pose>> held, ConnectivityGraph& graph,
                    SubspaceStats& stats)
@@ -82,8 +91,9 @@ size_t Subspace::addLine(Vec2 p) {
   return l;
 }
 
-long Subspace::sliceNodeAt(size_t k, Vec2 p) const {
+long Subspace::sliceNodeAt(size_t k, Vec2 p, bool knownFree) const {
   if (k >= slices_.size()) return -1;  // a subspace cut short by the time limit
+  if (knownFree && slices_[k].fscCount() == 1) return long(sliceNodes_[k][0]);
   const int f = slices_[k].locate(p);
   return f < 0 ? -1 : long(sliceNodes_[k][f]);
 }

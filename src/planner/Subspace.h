@@ -19,6 +19,13 @@ struct SubspaceStats {
   LineStats lineStats;
 };
 
+/// `scene` with every robot's shape shrunk by half the contact tolerance. Manifolds are built
+/// for these shapes, so a placement in contact (an assembled part resting on its neighbour)
+/// lies inside a free-space cell instead of on its boundary, while every placement in a cell
+/// keeps half the tolerance of clearance as the checker sees it (it shrinks by the whole), so
+/// motions inside cells stay certifiable.
+Scene withContactShapes(const Scene& scene, const CollisionChecker& checker);
+
 class Subspace {
  public:
   /// Robot `moving` of `scene` moves; each (robot, pose) in `held` stays put as an obstacle.
@@ -39,7 +46,9 @@ class Subspace {
   size_t addLine(Vec2 p);
 
   /// Graph node of the cell of slice k containing p, or -1 (also when slice k was never built).
-  long sliceNodeAt(size_t k, Vec2 p) const;
+  /// `knownFree`: the collision checker found p free here, so a slice of one cell needs no
+  /// point location.
+  long sliceNodeAt(size_t k, Vec2 p, bool knownFree = false) const;
   /// Graph node of the arc of line l containing theta, or -1.
   long lineNodeAt(size_t l, double theta) const;
 

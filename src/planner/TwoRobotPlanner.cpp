@@ -1,5 +1,6 @@
 #include "planner/TwoRobotPlanner.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "planner/Motion.h"
@@ -7,10 +8,14 @@
 namespace mms {
 
 TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
-    : scene_(scene), settings_(settings), checker_(scene_), rng_(settings.seed) {
+    : scene_(scene),
+      settings_(settings),
+      checker_(scene_),
+      contactScene_(withContactShapes(scene_, checker_)),
+      rng_(settings.seed) {
   for (size_t r = 0; r < 2; ++r) {
     translates_[r] = scene_.robots[r].motion == Motion::Translate;
-    worlds_[r] = std::make_unique<SliceWorld>(scene_, r);
+    worlds_[r] = std::make_unique<SliceWorld>(contactScene_, r);
     angles_[r] = std::make_unique<AngleSequence>(settings_.nTheta, rng_.uniform(0, 2 * M_PI));
     if (translates_[r]) {
       Stopwatch watch;
@@ -26,6 +31,7 @@ TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
 // More angles for a rigid robot: the next ones of its evenly spread sequence (the midpoints of
 // the current set), each a new base slice and a new slice in every subspace where it moves.
 void TwoRobotPlanner::addAngles(size_t robot, size_t count, const Termination& stop) {
+  const size_t firstNode = graph_.nodeCount();
   for (size_t i = 0; i < count && !stop(); ++i) {
     Stopwatch watch;
     base_[robot].emplace_back(*worlds_[robot],
@@ -34,24 +40,10 @@ void TwoRobotPlanner::addAngles(size_t robot, size_t count, const Termination& s
     for (auto& sub : subspaces_)
       if (sub->moving() == robot && !stop()) sub->addSlice(base_[robot].back());
   }
+  collectCells(firstNode);
 }
 
 TwoRobotPlanner::~TwoRobotPlanner() = default;
-
-// A free pose of `robot` among the obstacles at one of its angles, uniform over the slice.
-bool TwoRobotPlanner::sampleFixing(size_t robot, Fixing& out) {
-  const Box& b = scene_.bounds;
-  for (int attempt = 0; attempt < 200; ++attempt) {
-    const size_t k = rng_.below(base_[robot].size());
-    const Vec2 p{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)};
-    if (base_[robot][k].locate(p) < 0) continue;
-    const double theta =
-        translates_[robot] ? scene_.robots[robot].start.theta : base_[robot][k].theta();
-    out = {robot, {p.x, p.y, theta}, long(k), -1};
-    return true;
-  }
-  return false;
-}
 
 Vec2 TwoRobotPlanner::linePoint(size_t robot) {
   const Box& b = scene_.bounds;
@@ -64,15 +56,16 @@ Vec2 TwoRobotPlanner::linePoint(size_t robot) {
   return uniform();
 }
 
-long TwoRobotPlanner::nodeFor(const Subspace& sub, const Fixing& f) const {
-  if (f.angle >= 0) return sub.sliceNodeAt(size_t(f.angle), {f.pose.x, f.pose.y});
+long TwoRobotPlanner::nodeFor(const Subspace& sub, const Fixing& f, bool knownFree) const {
+  if (f.angle >= 0) return sub.sliceNodeAt(size_t(f.angle), {f.pose.x, f.pose.y}, knownFree);
   return sub.lineNodeAt(size_t(f.specialLine), f.pose.theta);
 }
 
-void TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop) {
+size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop) {
   const size_t moving = 1 - held.robot;
+  const size_t firstNode = graph_.nodeCount();
   subspaces_.push_back(std::make_unique<Subspace>(
-      uint32_t(subspaces_.size()), scene_, checker_, moving,
+      uint32_t(subspaces_.size()), contactScene_, checker_, moving,
       std::vector<std::pair<size_t, Pose>>{{held.robot, held.pose}}, graph_, stats_.manifolds));
   fixings_.push_back(held);
   ++stats_.subspaces;
@@ -88,18 +81,22 @@ void TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop) {
     sub.addLine({r.goal.x, r.goal.y});    // line 1
     for (size_t i = 0; i < settings_.nLines && !stop(); ++i) sub.addLine(linePoint(moving));
   }
-  // Meet every subspace of the other family at the pair of their held poses.
+  // Meet subspaces of the other family at the pair of their held poses.
   Stopwatch watch;
-  for (size_t j = 0; j + 1 < subspaces_.size(); ++j) {
-    if (subspaces_[j]->moving() != held.robot) continue;
-    const long here = nodeFor(sub, fixings_[j]);
+  for (const size_t j : crossCandidates(held)) {
+    // Both fixings are free among the obstacles; the pair meets where the robots are disjoint.
+    if (!checker_.robotsDisjoint(held.robot, held.pose, fixings_[j].robot, fixings_[j].pose))
+      continue;
+    const long here = nodeFor(sub, fixings_[j], true);
     if (here < 0) continue;
-    const long there = nodeFor(*subspaces_[j], held);
+    const long there = nodeFor(*subspaces_[j], held, true);
     if (there < 0) continue;
     graph_.addEdge(size_t(here), size_t(there));
     ++stats_.crossEdges;
   }
   stats_.crossSeconds += watch.seconds();
+  collectCells(firstNode);
+  return subspaces_.size() - 1;
 }
 
 TwoRobotResult TwoRobotPlanner::finish(TwoRobotResult r, MmsResult::Status status) {
@@ -120,13 +117,15 @@ TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
   std::array<Fixing, 2> start, goal;
   for (size_t r = 0; r < 2; ++r) {
     const Robot& rb = scene_.robots[r];
-    start[r] = {r, rb.start, translates_[r] ? 0L : -1L, translates_[r] ? -1L : 0L};
-    goal[r] = {r, rb.goal, translates_[r] ? 0L : -1L, translates_[r] ? -1L : 1L};
+    start[r] = {r, rb.start, translates_[r] ? 0L : -1L, translates_[r] ? -1L : 0L, -1};
+    goal[r] = {r, rb.goal, translates_[r] ? 0L : -1L, translates_[r] ? -1L : 1L, -1};
   }
   for (const Fixing& f : {start[0], start[1], goal[0], goal[1]}) addSubspace(f, stop);
   // Robot 0 moves in the subspace holding robot 1 at its start (index 1) / goal (index 3).
   const long from = nodeFor(*subspaces_[1], start[0]), to = nodeFor(*subspaces_[3], goal[0]);
   if (from < 0 || to < 0) return finish(result, MmsResult::Status::NotFound);
+  from_ = from;
+  to_ = to;
 
   size_t target = settings_.nFixings;
   Stopwatch sinceReport;
@@ -134,9 +133,7 @@ TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
     ++stats_.rounds;
     for (size_t r = 0; r < 2 && !stop(); ++r)
       while (stats_.fixings[r] < target + 2 && !stop()) {
-        Fixing f;
-        if (!sampleFixing(r, f)) break;
-        addSubspace(f, stop);
+        if (!grow(r, stop)) break;
         if (progress && sinceReport.seconds() >= 1.0) {
           progress(finish(result, MmsResult::Status::NotFound).stats);
           sinceReport = Stopwatch();
@@ -162,6 +159,8 @@ TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
     if (stop())
       return finish(result,
                     stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
+    if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds)
+      return finish(result, MmsResult::Status::NotFound);
     // Grow both the fixings and the angle sets: a narrow passage may need the two robots'
     // angles closer than the current sets offer (the Pacman's mouth and the square).
     target *= 2;

@@ -32,11 +32,31 @@ struct TwoRobotSettings {
   size_t nFixings = 8;  // n_f: fixings per robot in the first round; doubles every round
   // Every round after the first also doubles n_theta (the new angles are the midpoints), so
   // passages that need the robots' angles aligned closely are reached too.
+  // Share of a translating robot's fixings drawn from the free-space cells already reached
+  // from the start or the goal (the rest uniform over the robot's free space among the obstacles).
+  // Such a fixing always meets the subspace it came from, so the graph grows into passages where
+  // the robots stay tightly coupled (interlocked parts) that uniform fixings would almost never
+  // hit.
+  double expandShare = 0.5;
+  // Of those, the share grown as RRT-Connect chains (both robots pushed in turn towards a
+  // random target: interlocked parts climbing out together); the rest are single fixings in
+  // sparsely connected cells (EST), half of them near cell vertices (a part tucked into a
+  // corner). Measured on the assembly scenes: chains are needed for the first, and slow the
+  // second down when they are the majority.
+  double connectShare = 0.25;
+  size_t connectSteps = 200;  // at most this many fixings per chain
+  // A new subspace is tested for meeting points against at most this many subspaces of the
+  // other family: those whose held poses are nearest, plus a random sample of the rest.
+  size_t crossNearest = 256, crossRandom = 256;
   size_t shortcutAttempts = 300;
+  // Give up after this many rounds (0: only the time limit stops it). A budget in rounds,
+  // unlike one in seconds, gives the same answer for the same seed on any machine.
+  size_t maxRounds = 0;
 };
 
 struct TwoRobotStats {
   size_t rounds = 0, subspaces = 0, crossEdges = 0, graphNodes = 0, graphEdges = 0;
+  size_t expandedFixings = 0;  // fixings drawn from cells reached from start or goal
   size_t pathCells = 0, rejectedPaths = 0;
   std::array<size_t, 2> fixings{0, 0};
   SubspaceStats manifolds;  // slices, lines, cells, arcs over all subspaces
@@ -66,10 +86,18 @@ class TwoRobotPlanner {
     Pose pose;
     long angle;        // index into the robot's angle set, or -1
     long specialLine;  // -1, or 0 / 1: start / goal position (lines 0 and 1 of every subspace)
+    long parent;       // the subspace whose cell it was drawn from, or -1
   };
-  bool sampleFixing(size_t robot, Fixing& out);
-  void addSubspace(const Fixing& held, const Termination& stop);
-  long nodeFor(const Subspace& sub, const Fixing& f) const;
+  // Growth (TwoRobotGrowth.cpp): new fixings and the subspaces they hold.
+  bool grow(size_t robot, const Termination& stop);
+  bool uniformFixing(size_t robot, Fixing& out);
+  bool frontierFixing(size_t robot, Fixing& out);
+  bool connectTowards(size_t robot, const Termination& stop);
+  void collectCells(size_t firstNode);
+  bool reached(size_t node) const;
+  std::vector<size_t> crossCandidates(const Fixing& held);
+  size_t addSubspace(const Fixing& held, const Termination& stop);
+  long nodeFor(const Subspace& sub, const Fixing& f, bool knownFree = false) const;
   Vec2 linePoint(size_t robot);
   void addAngles(size_t robot, size_t count, const Termination& stop);
   TwoRobotResult finish(TwoRobotResult r, MmsResult::Status status);
@@ -77,6 +105,7 @@ class TwoRobotPlanner {
   Scene scene_;
   TwoRobotSettings settings_;
   CollisionChecker checker_;
+  Scene contactScene_;  // robots shrunk as the checker sees them: manifolds are built for them
   Random rng_;
   std::array<bool, 2> translates_;
   std::array<std::unique_ptr<SliceWorld>, 2> worlds_;
@@ -86,6 +115,11 @@ class TwoRobotPlanner {
   std::vector<Fixing> fixings_;  // fixings_[i] is held in subspaces_[i]
   std::vector<std::unique_ptr<Subspace>> subspaces_;
   ConnectivityGraph graph_;
+  std::array<std::vector<size_t>, 2> cells_;    // per robot: slice-cell nodes where it moves
+  std::array<std::vector<size_t>, 2> reached_;  // those connected to the start or goal
+  size_t reachedScan_ = 0;                      // graph size at the last full scan
+  std::vector<Box> cellBoxes_;                  // per slice-cell node: its bounding box
+  long from_ = -1, to_ = -1;                    // start and goal nodes once known
   TwoRobotStats stats_;
   Stopwatch clock_;
 };

@@ -40,4 +40,17 @@ Scene pacmanScene(double tightness);
 /// room for one robot at a time.
 Scene vikingHelmetScene();
 
+/// Three-handed assembly 1 (the paper's Further Work): two hooked parts in a tight shaft that
+/// must climb out in alternation; neither can leave while the other stays put. Parts translate
+/// only; their goals lie outside the static part. `slack` in (0, 0.15]: the play between parts
+/// and walls.
+Scene assemblyOneScene(double slack);
+
+/// Three-handed assembly 2: two M-shaped parts and three triangles in a corridor. Once the
+/// triangles are out, the left M must duck into the bottom-left corner so the right one can
+/// leave. Goals equal starts (for `mms assemble`: take every part out of the static part's
+/// box). With `mPartsOnly`, the triangles are left out and the M parts get goals outside: the
+/// 4-D problem of the last step, for `mms plan` and `mms bench`. `slack` in (0, 0.15].
+Scene assemblyTwoScene(double slack, bool mPartsOnly = false);
+
 }  // namespace mms

@@ -1,6 +1,7 @@
 #pragma once
 // When a long computation must stop: a deadline, and an optional flag set from outside (e.g.
 // a SIGINT handler). Planners check it between manifolds.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 
@@ -15,6 +16,11 @@ class Termination {
         cancel_(cancel) {}
   bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
   bool operator()() const { return cancelled() || Clock::now() >= deadline_; }
+  /// Seconds until the deadline (0 once passed or cancelled), for budgets of sub-tasks.
+  double secondsLeft() const {
+    if (cancelled()) return 0;
+    return std::max(0.0, std::chrono::duration<double>(deadline_ - Clock::now()).count());
+  }
 
  private:
   Clock::time_point deadline_;

@@ -1,0 +1,78 @@
+#pragma once
+// Three-handed translational disassembly, as in the Further Work section of Salzman, Hemmer,
+// Halperin, "On the power of manifold samples in exploring configuration spaces and the
+// dimensionality of narrow passages": the obstacles are the static part (the first hand), the
+// robots are the movable parts. Each step moves one part, or two together (second and third
+// hands), while the remaining parts stay put as obstacles, until every part has left the static
+// part's bounding box (or reached its given target).
+//
+// One part alone is planned exactly: a translating part's free space is one slice, so "no
+// step" is a proof. Two parts use the two-robot recursion (a 4-D C-space for translating
+// parts) under a budget that doubles every pass, so the search is complete only in the limit. Parts
+// that left stay parked where they went, as obstacles for the later steps, so the whole disassembly
+// is one continuous motion of all parts, certified at the end.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scene/Scene.h"
+#include "util/Termination.h"
+
+namespace mms {
+
+struct DisassemblySettings {
+  uint64_t seed = 1;
+  bool pairs = true;  // three hands: let two parts move together
+  // Budget of one two-part attempt in the first pass, in rounds of the two-robot planner (each
+  // doubles its fixings); every further pass allows one round more, so the work per attempt
+  // doubles. Rounds, not seconds: the same seed gives the same sequence on any machine.
+  size_t firstPairRounds = 3;
+  double singleSeconds = 1;  // budget of a rigid part alone (a translating one is exact)
+};
+
+struct DisassemblyStep {
+  std::vector<size_t> parts;      // the parts that move (indices into the scene's robots)
+  std::vector<size_t> removed;    // those that end at their targets (a helper may return)
+  Scene scene;                    // the step's problem: moving parts as robots, the rest obstacles
+  std::vector<Config> waypoints;  // certified path in `scene`
+  double seconds = 0;
+};
+
+struct DisassemblyResult {
+  std::vector<DisassemblyStep> steps;
+  std::vector<size_t> stuck;  // parts still in place when no step was found in time
+  Scene finalScene;           // the input with every part's goal where it ended
+  std::vector<Config> path;   // all parts, the whole disassembly; certified in finalScene
+  size_t attempts = 0;        // planner runs (single parts and pairs)
+  double seconds = 0;
+  bool complete() const { return stuck.empty(); }
+};
+
+class DisassemblyPlanner {
+ public:
+  /// Parts whose goal equals their start are to leave the static part's bounding box (the
+  /// box of all obstacles); the others go to their goals. The scene must have obstacles.
+  DisassemblyPlanner(const Scene& scene, DisassemblySettings settings = {});
+
+  DisassemblyResult solve(const Termination& stop,
+                          const std::function<void(const std::string&)>& progress = {});
+
+ private:
+  struct Attempt;
+  bool trySingle(size_t part, const Termination& stop, DisassemblyResult& out);
+  bool tryPair(size_t a, size_t b, int returning, size_t rounds, const Termination& stop,
+               DisassemblyResult& out);
+  Scene stepScene(const std::vector<size_t>& moving) const;
+  std::vector<Pose> targetsFor(const Scene& step, size_t robot, size_t count) const;
+  void record(DisassemblyStep step, DisassemblyResult& out);
+
+  Scene scene_;
+  DisassemblySettings settings_;
+  Box box_;                 // the static part's bounding box
+  std::vector<Pose> pose_;  // every part's current pose
+  std::vector<bool> done_;  // left the box or reached its target
+  std::vector<Config> path_;
+  uint64_t attemptSeed_;
+};
+
+}  // namespace mms

@@ -1,0 +1,239 @@
+// Translating parts and three-handed disassembly (issue 6): the 4-D recursion on interlocked
+// parts, `mms assemble` on the paper's two assembly scenarios, the exact one-part decision
+// against a brute-force flood fill with the collision checker, and the files it writes.
+#include <gtest/gtest.h>
+
+#include <queue>
+#include <set>
+
+#include "Support.h"
+#include "assembly/Disassembly.h"
+#include "graph/ConnectivityGraph.h"
+#include "manifolds/CellSampling.h"
+#include "planner/TwoRobotPlanner.h"
+#include "scene/Generators.h"
+#include "scene/SceneIO.h"
+
+using namespace mms;
+using namespace mms::test;
+
+namespace {
+
+Box partBox(const Scene& s, size_t robot, const Pose& p) {
+  Ring r;
+  transformRing(s.robots[robot].shape, p, r);
+  return boundingBox(r);
+}
+
+Box obstaclesBox(const Scene& s) {
+  Box b = boundingBox(s.obstacles[0]);
+  for (const Ring& o : s.obstacles) {
+    const Box c = boundingBox(o);
+    b = {std::min(b.xmin, c.xmin), std::min(b.ymin, c.ymin), std::max(b.xmax, c.xmax),
+         std::max(b.ymax, c.ymax)};
+  }
+  return b;
+}
+
+// Moves between consecutive waypoints that change which robot moves.
+int alternations(const std::vector<Config>& w) {
+  int switches = 0, last = -1;
+  for (size_t j = 1; j < w.size(); ++j) {
+    const int moving = (w[j][0] != w[j - 1][0] || w[j][1] != w[j - 1][1]) ? 0 : 1;
+    if (last >= 0 && moving != last) ++switches;
+    last = moving;
+  }
+  return switches;
+}
+
+}  // namespace
+
+TEST(ConnectivityGraph, IncrementalComponentsAgreeWithSearch) {
+  ConnectivityGraph g;
+  Random rng(5);
+  for (int i = 0; i < 200; ++i) g.addNode({ConnectivityGraph::Kind::SliceCell, 0, 0, 0});
+  for (int e = 0; e < 150; ++e) g.addEdge(rng.below(200), rng.below(200));
+  for (int q = 0; q < 500; ++q) {
+    const size_t a = rng.below(200), b = rng.below(200);
+    EXPECT_EQ(g.connected(a, b), g.path(a, b).has_value()) << a << " " << b;
+  }
+}
+
+TEST(CellSampling, PointsLieInTheirCell) {
+  const Scene s = assemblyTwoScene(0.05, true);
+  const SliceWorld world(s, 0);
+  const Slice slice(world, exact::rationalAngleNear(0, 30));
+  Random rng(3);
+  ASSERT_GT(slice.fscCount(), 0u);
+  int near = 0, towards = 0;
+  for (size_t c = 0; c < slice.fscCount(); ++c)
+    for (int k = 0; k < 50; ++k) {
+      if (const auto p = samplePointNearVertex(slice, c, rng)) {
+        EXPECT_EQ(slice.locate(*p), int(c));
+        ++near;
+      }
+      const Vec2 target{rng.uniform(-4.5, 11.5), rng.uniform(-6, 7)};
+      if (const auto p = pointTowards(slice, c, target, rng)) {
+        EXPECT_EQ(slice.locate(*p), int(c));
+        if (slice.locate(target) == int(c)) {
+          EXPECT_EQ(p->x, target.x);
+        }
+        ++towards;
+      }
+    }
+  EXPECT_GT(near, 0);
+  EXPECT_GT(towards, 0);
+}
+
+TEST(Scenarios, AssemblyFilesMatchTheGeneratorAndValidate) {
+  TempDir dir;
+  for (const auto& [args, file] :
+       {std::pair{"assembly-1", "assembly-1.json"}, std::pair{"assembly-2", "assembly-2.json"},
+        std::pair{"assembly-2 --m-parts-only", "assembly-2-m-parts.json"}}) {
+    const std::string out = dir.path(file);
+    ASSERT_EQ(runMms(std::string("scenario ") + args + " -o " + quote(out)).code, 0) << args;
+    EXPECT_EQ(readFile(out), readFile(scenario(std::string("assembly/") + file))) << file;
+  }
+  for (const char* slack : {"0.001", "0.15"})
+    for (const char* name : {"assembly-1", "assembly-2"})
+      EXPECT_EQ(runMms(std::string("scenario ") + name + " --slack " + slack + " -o " +
+                       quote(dir.path("s.json")))
+                    .code,
+                0)
+          << name << " " << slack;
+  EXPECT_EQ(runMms("scenario assembly-1 --slack 0.5 -o " + quote(dir.path("x.json"))).code, 2);
+}
+
+// Neither hooked part of assembly 1 can leave while the other stays put: the exact one-part
+// decision (one slice) against a flood fill over a grid of placements, each tested by the
+// collision checker, that must stay inside the static part's box.
+TEST(Assembly, OnePartAloneIsStuckExactlyAndByFloodFill) {
+  const Scene s = assemblyOneScene(0.05);
+  DisassemblySettings one;
+  one.pairs = false;
+  const DisassemblyResult r = DisassemblyPlanner(s, one).solve(Termination(planSeconds(20)));
+  EXPECT_TRUE(r.steps.empty());
+  EXPECT_EQ(r.stuck, (std::vector<size_t>{0, 1}));
+  const CollisionChecker checker(s);
+  const Box box = obstaclesBox(s);
+  for (size_t moving = 0; moving < 2; ++moving) {
+    const size_t held = 1 - moving;
+    const double h = 0.01;
+    const Pose start = s.robots[moving].start;
+    std::set<std::pair<int, int>> seen{{0, 0}};
+    std::queue<std::pair<int, int>> todo;
+    todo.push({0, 0});
+    while (!todo.empty() && seen.size() < 100000) {
+      const auto [i, j] = todo.front();
+      todo.pop();
+      const Pose p{start.x + i * h, start.y + j * h, start.theta};
+      EXPECT_TRUE(partBox(s, moving, p).distance(box) == 0) << "escaped at " << i << "," << j;
+      for (const auto& [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        const std::pair<int, int> n{i + di, j + dj};
+        const Pose q{start.x + n.first * h, start.y + n.second * h, start.theta};
+        if (seen.count(n) || !checker.robotFree(moving, q) ||
+            !checker.robotsDisjoint(moving, q, held, s.robots[held].start))
+          continue;
+        seen.insert(n);
+        todo.push(n);
+      }
+    }
+    EXPECT_LT(seen.size(), 200u) << "part " << moving << " should only rattle in place";
+    EXPECT_GT(seen.size(), 4u);
+  }
+}
+
+// Together they climb out of the shaft in alternation: every move gains at most twice the
+// slack on the other part, so the certified path needs many turns.
+TEST(Assembly, HookedPartsClimbOutInAlternation) {
+  const Scene s = loadScene(scenario("assembly/assembly-1.json"));
+  const CollisionChecker checker(s);
+  for (int seed = 1; seed <= seedsToRun(3); ++seed) {
+    TwoRobotSettings st;
+    st.seed = uint64_t(seed);
+    const TwoRobotResult r = TwoRobotPlanner(s, st).solve(Termination(planSeconds(60)));
+    ASSERT_EQ(r.status, MmsResult::Status::Found) << "seed " << seed;
+    Path p;
+    p.waypoints = r.waypoints;
+    EXPECT_TRUE(checkPath(s, checker, p).ok);
+    // The climb is 2.2 and each turn gains at most 2 * 0.05.
+    EXPECT_GE(alternations(r.waypoints), 21) << "seed " << seed;
+  }
+}
+
+TEST(Assembly, MixedRigidAndTranslatingRobots) {
+  Scene s = loadScene(scenario("two-robots/pacman-0.5.json"));
+  s.robots[1].motion = Motion::Translate;  // the square: both ends have angle 0
+  const CollisionChecker checker(s);
+  TwoRobotSettings st;
+  const TwoRobotResult r = TwoRobotPlanner(s, st).solve(Termination(planSeconds(60)));
+  ASSERT_EQ(r.status, MmsResult::Status::Found);
+  Path p;
+  p.waypoints = r.waypoints;
+  EXPECT_TRUE(checkPath(s, checker, p).ok);
+  for (const Config& q : r.waypoints) EXPECT_EQ(q[5], 0.0);
+}
+
+// Assembly 2 with mms assemble: the triangles leave first (the one under the wide M needs it
+// lifted: two hands), then the wide M ducks into the bottom-left pocket so the tall one can
+// pass; the whole motion is certified by mms check, and the same seed writes the same files.
+TEST(Assembly, AssembleCommandRemovesEveryPartOfAssemblyTwo) {
+  TempDir dir;
+  const std::string scene = quote(scenario("assembly/assembly-2.json"));
+  const std::string out = dir.path("out"), svg = dir.path("a.svg");
+  const Outcome r = runMms("assemble " + scene + " -q -o " + quote(out) + " --svg " + quote(svg));
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("every part removed"), std::string::npos) << r.out;
+  const Outcome whole = runMms("check " + quote(out + "/disassembly.scene.json") + " " +
+                               quote(out + "/disassembly.path.json"));
+  EXPECT_EQ(whole.code, 0) << whole.out;
+  const auto summary = nlohmann::json::parse(readFile(out + "/disassembly.json"));
+  EXPECT_TRUE(summary["complete"].get<bool>());
+  const size_t steps = summary["steps"].size();
+  ASSERT_GE(steps, 3u);
+  for (size_t k = 1; k <= steps; ++k) {
+    const std::string stem = out + "/step-" + std::to_string(k);
+    EXPECT_EQ(
+        runMms("check " + quote(stem + ".scene.json") + " " + quote(stem + ".path.json")).code, 0)
+        << "step " << k;
+  }
+  // The tall M leaves only after the wide M has been in the pocket (below the corridor).
+  const Scene s = loadScene(out + "/disassembly.scene.json");
+  const Path p = loadPath(out + "/disassembly.path.json", s);
+  const Box box = obstaclesBox(s);
+  bool ducked = false, tallOutAfterDuck = false;
+  for (const Config& q : p.waypoints) {
+    if (q[3 * 3 + 1] < -1.0 && partBox(s, 3, poseOf(q, 3)).distance(box) == 0) ducked = true;
+    if (partBox(s, 4, poseOf(q, 4)).distance(box) > 0) {
+      tallOutAfterDuck = ducked;
+      break;
+    }
+  }
+  EXPECT_TRUE(tallOutAfterDuck);
+  for (size_t i = 0; i < s.robots.size(); ++i)
+    EXPECT_GT(partBox(s, i, s.robots[i].goal).distance(box), 0) << s.robots[i].name;
+  EXPECT_NE(readFile(svg).find("animateTransform"), std::string::npos);
+  const std::string again = dir.path("again");
+  ASSERT_EQ(runMms("assemble " + scene + " -q -o " + quote(again)).code, 0);
+  EXPECT_EQ(readFile(again + "/disassembly.path.json"), readFile(out + "/disassembly.path.json"));
+}
+
+TEST(Assembly, StuckPartsAreNamedAndBadInputRejected) {
+  TempDir dir;
+  const std::string a1 = quote(scenario("assembly/assembly-1.json"));
+  const Outcome stuck = runMms("assemble " + a1 + " --no-pairs -q -o " + quote(dir.path("o")));
+  EXPECT_EQ(stuck.code, 1);
+  EXPECT_NE(stuck.out.find("stuck: A, B"), std::string::npos) << stuck.out;
+  const std::string noStatic =
+      dir.file("empty.json",
+               R"({"format": "mms-scene/1", "bounds": [0, 0, 10, 10], "obstacles": [],
+          "robots": [{"shape": [[0,0],[1,0],[0,1]], "start": [5,5,0], "goal": [5,5,0],
+                      "motion": "translate"}]})");
+  const Outcome bad = runMms("assemble " + quote(noStatic) + " -o " + quote(dir.path("p")));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("empty.json: obstacles:"), std::string::npos) << bad.err;
+  const std::string file = dir.file("plain", "x");
+  const Outcome notDir = runMms("assemble " + a1 + " -o " + quote(file));
+  EXPECT_EQ(notDir.code, 2);
+  EXPECT_NE(notDir.err.find("(output)"), std::string::npos) << notDir.err;
+}
