@@ -10,6 +10,7 @@
 #include "scene/PathIO.h"
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
+#include "util/Interrupt.h"
 
 namespace mms::cli {
 
@@ -40,7 +41,8 @@ int assemble(const AssembleArgs& a) {
   auto progress = [&](const std::string& line) {
     if (!a.quiet) std::fprintf(stderr, "mms assemble: %s\n", line.c_str());
   };
-  const DisassemblyResult r = planner.solve(Termination(a.timeLimit), progress);
+  const DisassemblyResult r = planner.solve(Termination(a.timeLimit, sigintFlag()), progress);
+  if (interruptRequested()) throw Interrupted();
 
   // Files: one scene and one certified path per step, the whole motion, a summary.
   nlohmann::json summary = {

@@ -256,6 +256,15 @@ int bench(const BenchArgs& a) {
         continue;  // reaped on a later pass
       }
       if (got != r.pid) continue;
+      // A run ended by Ctrl-C (exit 130, or SIGINT before it installed its handler) is not a
+      // result: it is left unrecorded, to run again on resume.
+      if ((WIFEXITED(status) && WEXITSTATUS(status) == 130) ||
+          (WIFSIGNALED(status) && WTERMSIG(status) == SIGINT)) {
+        interrupted = true;
+        running.erase(running.begin() + long(i));
+        reaped = true;
+        break;
+      }
       RunRecord rec = r.job.record;
       rec.wallSeconds = elapsed;
       rec.peakMemoryMb = usage.ru_maxrss / 1024.0;

@@ -10,6 +10,7 @@
 #include "scene/Json.h"
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
+#include "util/Interrupt.h"
 
 namespace mms::cli {
 
@@ -124,7 +125,8 @@ int planOmpl(const PlanArgs& a, const Scene& scene) {
 #if !defined(__SANITIZE_ADDRESS__)
   s.keepUntilExit = true;  // under ASan, free everything so leaks stay visible
 #endif
-  const OmplResult r = planWithOmpl(scene, s, Termination(a.timeLimit));
+  const OmplResult r = planWithOmpl(scene, s, Termination(a.timeLimit, sigintFlag()));
+  if (interruptRequested()) throw Interrupted();
   const char* status = r.status == OmplResult::Status::Found         ? "found"
                        : r.status == OmplResult::Status::Uncertified ? "uncertified"
                                                                      : "not_found";
@@ -210,7 +212,8 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
                  clock.seconds(), s.rounds, s.subspaces, s.manifolds.slices, s.manifolds.lines,
                  s.graphNodes, s.graphEdges);
   };
-  const TwoRobotResult res = planner.solve(Termination(a.timeLimit), progress);
+  const TwoRobotResult res = planner.solve(Termination(a.timeLimit, sigintFlag()), progress);
+  if (interruptRequested()) throw Interrupted();
   nlohmann::json j = runSummary(a, res.status == MmsResult::Status::Found ? "found" : "not_found",
                                 res.stats.totalSeconds);
   const TwoRobotStats& ts = res.stats;
@@ -294,7 +297,9 @@ int plan(const PlanArgs& a) {
           clock.seconds(), s.rounds, s.manifolds.slices, s.manifolds.lines, s.graphNodes,
           s.graphEdges);
     };
-    const MmsResult res = planner.solve(q.start, q.goal, Termination(a.timeLimit), progress);
+    const MmsResult res =
+        planner.solve(q.start, q.goal, Termination(a.timeLimit, sigintFlag()), progress);
+    if (interruptRequested()) throw Interrupted();
     nlohmann::json j = runSummary(a, res.status == MmsResult::Status::Found ? "found" : "not_found",
                                   res.stats.totalSeconds);
     const MmsStats& ms = res.stats;

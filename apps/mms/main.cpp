@@ -8,6 +8,7 @@
 #include "Commands.h"
 #include "baselines/OmplPlanner.h"
 #include "scene/Errors.h"
+#include "util/Interrupt.h"
 
 namespace {
 
@@ -277,6 +278,9 @@ int main(int argc, char** argv) {
   } catch (const mms::InputError& e) {
     std::cerr << oneLine(e.what()) << "\n";
     return 2;
+  } catch (const mms::Interrupted&) {
+    std::cerr << "mms: interrupted (Ctrl-C); no output written\n";
+    return 130;
   } catch (const std::bad_alloc&) {
     std::cerr << "mms: out of memory\n";
     return 3;

@@ -166,7 +166,7 @@ bool DisassemblyPlanner::tryPair(size_t a, size_t b, int returning, size_t round
   settings.seed = attemptSeed_++;
   settings.maxRounds = rounds;
   TwoRobotPlanner planner(step, settings);
-  const TwoRobotResult r = planner.solve(Termination(stop.secondsLeft()));
+  const TwoRobotResult r = planner.solve(Termination(stop.secondsLeft(), stop.cancelFlag()));
   if (r.status != MmsResult::Status::Found) return false;
   std::vector<size_t> removed;
   if (returning != 0) removed.push_back(a);
@@ -199,8 +199,10 @@ DisassemblyResult DisassemblyPlanner::solve(
     if (left.empty()) break;
     bool found = false;
     for (const size_t p : left)
-      if (!stop() &&
-          trySingle(p, Termination(std::min(settings_.singleSeconds, stop.secondsLeft())), out)) {
+      if (!stop() && trySingle(p,
+                               Termination(std::min(settings_.singleSeconds, stop.secondsLeft()),
+                                           stop.cancelFlag()),
+                               out)) {
         found = true;
         break;
       }

@@ -14,6 +14,8 @@ class Termination {
       : deadline_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                      std::chrono::duration<double>(seconds))),
         cancel_(cancel) {}
+  /// The cancel flag, for budgets of sub-tasks that must stop with this one.
+  const std::atomic<bool>* cancelFlag() const { return cancel_; }
   bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
   bool operator()() const { return cancelled() || Clock::now() >= deadline_; }
   /// Seconds until the deadline (0 once passed or cancelled), for budgets of sub-tasks.
