@@ -9,10 +9,10 @@ using namespace mms::test;
 
 namespace {
 
-// Starts `args` in the background, sends SIGINT after a second, reports its exit code.
-Outcome interruptAfterASecond(const std::string& args) {
+// Starts `args` in the background, sends SIGINT after two seconds, reports its exit code.
+Outcome interruptLater(const std::string& args) {
   return runCommand("( " + std::string(MMS_BINARY) + " " + args +
-                    " & pid=$!; sleep 1; kill -INT $pid; wait $pid; echo \"rc=$?\" )");
+                    " & pid=$!; sleep 2; kill -INT $pid; wait $pid; echo \"rc=$?\" )");
 }
 
 }  // namespace
@@ -22,8 +22,8 @@ TEST(Interrupt, CtrlCEndsPlanWithoutOutput) {
   const std::string out = dir.path("p.json"), stats = dir.path("s.json");
   Stopwatch clock;
   const Outcome r =
-      interruptAfterASecond("plan " + quote(scenario("one-robot/sealed-ring.json")) +
-                            " --time-limit 120 -o " + quote(out) + " --stats-json " + quote(stats));
+      interruptLater("plan " + quote(scenario("one-robot/sealed-ring.json")) +
+                     " --time-limit 120 -o " + quote(out) + " --stats-json " + quote(stats));
   EXPECT_LT(clock.seconds(), 30.0);
   EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.out << r.err;
   EXPECT_NE(r.err.find("interrupted"), std::string::npos) << r.err;
@@ -37,7 +37,7 @@ TEST(Interrupt, CtrlCEndsAssembleWithoutOutput) {
   ASSERT_EQ(runMms("scenario assembly-1 --slack 0.002 -o " + quote(scene)).code, 0);
   Stopwatch clock;
   const Outcome r =
-      interruptAfterASecond("assemble " + quote(scene) + " -q --time-limit 120 -o " + quote(out));
+      interruptLater("assemble " + quote(scene) + " -q --time-limit 120 -o " + quote(out));
   EXPECT_LT(clock.seconds(), 30.0);
   EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.out << r.err;
   EXPECT_FALSE(std::filesystem::exists(out + "/disassembly.json"));

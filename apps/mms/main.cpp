@@ -255,6 +255,7 @@ int main(int argc, char** argv) {
     if (*validateCmd) return validate(va);
     if (*checkCmd) return check(ca);
     if (*renderCmd) return render(ra);
+    if (*planCmd || *assembleCmd) mms::sigintFlag();  // from here on, Ctrl-C ends them cleanly
     if (*planCmd) return plan(pa);
     if (*scenarioCmd) return scenario(sa);
     if (*assembleCmd) return assemble(aa);
