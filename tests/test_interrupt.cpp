@@ -42,3 +42,32 @@ TEST(Interrupt, CtrlCEndsAssembleWithoutOutput) {
   EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.out << r.err;
   EXPECT_FALSE(std::filesystem::exists(out + "/disassembly.json"));
 }
+
+// Ctrl-C in a terminal reaches the bench and its runs (one process group): it stops, exits
+// 130, and records none of the interrupted runs, so resuming runs them again.
+TEST(Interrupt, CtrlCEndsBenchWithoutRecordingInterruptedRuns) {
+  TempDir dir;
+  const std::string out = dir.path("b");
+  Stopwatch clock;
+  const Outcome r =
+      runCommand("( setsid " + std::string(MMS_BINARY) + " bench " +
+                 quote(scenario("one-robot/sealed-ring.json")) +
+                 " --planners mms --runs 2 --time-limit 30 --jobs 2 -o " + quote(out) +
+                 " & pid=$!; sleep 2; /bin/kill -INT -- -$pid; wait $pid; echo \"rc=$?\" )");
+  EXPECT_LT(clock.seconds(), 20.0);
+  EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.out << r.err;
+  EXPECT_NE(r.err.find("interrupted"), std::string::npos) << r.err;
+  EXPECT_EQ(readFile(out + "/runs.jsonl"), "");
+}
+
+// A run that Ctrl-C ended before the bench saw the signal itself is not a result either.
+TEST(Interrupt, BenchStopsWhenARunWasInterrupted) {
+  TempDir dir;
+  const std::string out = dir.path("b");
+  const Outcome r = runCommand(
+      "( " + std::string(MMS_BINARY) + " bench " + quote(scenario("one-robot/sealed-ring.json")) +
+      " --planners mms --runs 2 --time-limit 30 --jobs 1 -o " + quote(out) +
+      " & pid=$!; sleep 2; /bin/kill -INT $(pgrep -P $pid); wait $pid; echo \"rc=$?\" )");
+  EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.out << r.err;
+  EXPECT_EQ(readFile(out + "/runs.jsonl"), "");
+}

@@ -24,15 +24,13 @@
 #include "scene/Json.h"
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
+#include "util/Interrupt.h"
 
 namespace fs = std::filesystem;
 
 namespace mms::cli {
 
 namespace {
-
-std::atomic<bool> interrupted{false};
-void onSigint(int) { interrupted = true; }
 
 struct Job {
   RunRecord record;
@@ -216,7 +214,9 @@ int bench(const BenchArgs& a) {
   const std::string exe = selfExe();
   const std::string tmp = a.output + "/tmp";
   fs::create_directories(tmp);
-  signal(SIGINT, onSigint);
+  const std::atomic<bool>& sigint = *sigintFlag();
+  bool childInterrupted = false;  // a run ended by Ctrl-C: the terminal's, reaching it first
+  auto interrupted = [&] { return sigint.load() || childInterrupted; };
   struct Running {
     Job job;
     pid_t pid;
@@ -227,7 +227,7 @@ int bench(const BenchArgs& a) {
   size_t next = 0, finished = 0, skipped = 0;
   const size_t total = jobs.size();
   const double grace = std::max(5.0, 0.2 * a.timeLimit);
-  while ((next < jobs.size() || !running.empty()) && !interrupted) {
+  while ((next < jobs.size() || !running.empty()) && !interrupted()) {
     while (next < jobs.size() && running.size() < a.jobs) {
       Job job = jobs[next++];
       if (done.count(key(job.record))) {
@@ -260,7 +260,7 @@ int bench(const BenchArgs& a) {
       // result: it is left unrecorded, to run again on resume.
       if ((WIFEXITED(status) && WEXITSTATUS(status) == 130) ||
           (WIFSIGNALED(status) && WTERMSIG(status) == SIGINT)) {
-        interrupted = true;
+        childInterrupted = true;
         running.erase(running.begin() + long(i));
         reaped = true;
         break;
@@ -290,7 +290,7 @@ int bench(const BenchArgs& a) {
     }
     if (!reaped) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  if (interrupted) {
+  if (interrupted()) {
     for (Running& r : running) kill(r.pid, SIGKILL);
     for (Running& r : running) waitpid(r.pid, nullptr, 0);
     std::fprintf(stderr, "mms bench: interrupted; %zu runs recorded in %s (run again to resume)\n",
