@@ -24,6 +24,14 @@ void TwoRobotPlanner::collectCells(size_t firstNode) {
   }
 }
 
+// A fixing of `robot` at p in slice `manifold` (of base_ and of every subspace where it moves);
+// a translating robot keeps its own angle.
+TwoRobotPlanner::Fixing TwoRobotPlanner::fixingAt(size_t robot, const Slice& slice, size_t manifold,
+                                                  Vec2 p, long parent) const {
+  const double theta = translates_[robot] ? scene_.robots[robot].start.theta : slice.theta();
+  return {robot, {p.x, p.y, theta}, long(manifold), -1, parent};
+}
+
 bool TwoRobotPlanner::reached(size_t v) const {
   return from_ >= 0 && (graph_.connected(v, size_t(from_)) || graph_.connected(v, size_t(to_)));
 }
@@ -66,9 +74,7 @@ bool TwoRobotPlanner::uniformFixing(size_t robot, Fixing& out) {
     const size_t k = rng_.below(base_[robot].size());
     const Vec2 p{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)};
     if (base_[robot][k].locate(p) < 0) continue;
-    const double theta =
-        translates_[robot] ? scene_.robots[robot].start.theta : base_[robot][k].theta();
-    out = {robot, {p.x, p.y, theta}, long(k), -1, -1};
+    out = fixingAt(robot, base_[robot][k], k, p, -1);
     return true;
   }
   return false;
@@ -87,8 +93,7 @@ bool TwoRobotPlanner::frontierFixing(size_t robot, Fixing& out) {
     const auto p = rng_.uniform() < 0.5 ? samplePointNearVertex(slice, n.cell, rng_)
                                         : samplePointInCell(slice, n.cell, rng_, 16);
     if (!p) continue;
-    const double theta = translates_[robot] ? scene_.robots[robot].start.theta : slice.theta();
-    out = {robot, {p->x, p->y, theta}, long(n.manifold), -1, long(n.subspace)};
+    out = fixingAt(robot, slice, n.manifold, *p, long(n.subspace));
     ++stats_.expandedFixings;
     return true;
   }
@@ -99,6 +104,7 @@ bool TwoRobotPlanner::frontierFixing(size_t robot, Fixing& out) {
 // target, move the robot as far as its cell allows in the target's direction, hold it there
 // and move the other robot the same way in the new subspace, and so on while they make
 // headway. Two interlocked parts climb out of a shaft like this, each step by the full play.
+// Returns whether it added any fixing.
 bool TwoRobotPlanner::connectTowards(size_t robot, const Termination& stop) {
   const size_t root = size_t(rng_.uniform() < 0.5 ? from_ : to_);
   const Box& b = scene_.bounds;
@@ -120,20 +126,18 @@ bool TwoRobotPlanner::connectTowards(size_t robot, const Termination& stop) {
   if (length == 0) return false;
   const Vec2 unit = (1 / length) * direction;
   const double minStep = 1e-4 * std::max(b.width(), b.height());
-  size_t moving = robot, stalled = 0;
+  size_t moving = robot, stalled = 0, added = 0;
   for (size_t step = 0; step < settings_.connectSteps && !stop(); ++step) {
     const ConnectivityGraph::Node n = graph_.node(size_t(node));  // a copy: the graph grows
-    const Subspace& sub = *subspaces_[n.subspace];
-    const Slice& slice = sub.slices()[n.manifold];
-    const auto p = pointTowards(slice, n.cell, center(size_t(node)) + direction, rng_);
+    const Slice& slice = subspaces_[n.subspace]->slices()[n.manifold];
+    const Vec2 from = center(size_t(node));
+    const auto p = pointTowards(slice, n.cell, from + direction, rng_);
     if (!p) break;
-    const double theta = translates_[moving] ? scene_.robots[moving].start.theta : slice.theta();
-    const Fixing f{moving, {p->x, p->y, theta}, long(n.manifold), -1, long(n.subspace)};
     // Headway: how far this robot's new pose lies along the direction beyond the cell's centre.
-    const double headway =
-        (p->x - center(size_t(node)).x) * unit.x + (p->y - center(size_t(node)).y) * unit.y;
+    const double headway = dot(*p - from, unit);
     ++stats_.expandedFixings;
-    const size_t k = addSubspace(f, stop);
+    const size_t k = addSubspace(fixingAt(moving, slice, n.manifold, *p, long(n.subspace)), stop);
+    ++added;
     stalled = headway < minStep ? stalled + 1 : 0;
     if (stalled >= 2) break;
     // The other robot, held in subspace n.subspace, now moves in subspace k from its pose.
@@ -142,7 +146,7 @@ bool TwoRobotPlanner::connectTowards(size_t robot, const Termination& stop) {
     if (node < 0 || graph_.node(size_t(node)).kind != ConnectivityGraph::Kind::SliceCell) break;
     moving = 1 - moving;
   }
-  return true;
+  return added > 0;
 }
 
 // The subspaces of the other family a new one (holding `held`) is tested against: all while

@@ -90,6 +90,7 @@ class TwoRobotPlanner {
   };
   // Growth (TwoRobotGrowth.cpp): new fixings and the subspaces they hold.
   bool grow(size_t robot, const Termination& stop);
+  Fixing fixingAt(size_t robot, const Slice& slice, size_t manifold, Vec2 p, long parent) const;
   bool uniformFixing(size_t robot, Fixing& out);
   bool frontierFixing(size_t robot, Fixing& out);
   bool connectTowards(size_t robot, const Termination& stop);
