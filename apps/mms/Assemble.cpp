@@ -1,4 +1,5 @@
 // mms assemble: three-handed disassembly of a scene (src/assembly/Disassembly.h) and its files.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -22,6 +23,18 @@ std::string partList(const Scene& scene, const std::vector<size_t>& parts) {
   return out;
 }
 
+// "step 3: lower out; wide-M makes room (two hands, 0.436 s, 9 waypoints)"
+std::string describe(const Scene& scene, size_t index, const DisassemblyStep& s) {
+  std::vector<size_t> helpers;
+  for (const size_t p : s.parts)
+    if (std::find(s.removed.begin(), s.removed.end(), p) == s.removed.end()) helpers.push_back(p);
+  char tail[96];
+  std::snprintf(tail, sizeof tail, " (%s, %.3f s, %zu waypoints)",
+                s.parts.size() == 1 ? "one hand" : "two hands", s.seconds, s.waypoints.size());
+  return "step " + std::to_string(index + 1) + ": " + partList(scene, s.removed) + " out" +
+         (helpers.empty() ? "" : "; " + partList(scene, helpers) + " makes room") + tail;
+}
+
 }  // namespace
 
 int assemble(const AssembleArgs& a) {
@@ -38,8 +51,8 @@ int assemble(const AssembleArgs& a) {
   settings.seed = a.seed;
   settings.pairs = !a.noPairs;
   DisassemblyPlanner planner(scene, settings);
-  auto progress = [&](const std::string& line) {
-    if (!a.quiet) std::fprintf(stderr, "mms assemble: %s\n", line.c_str());
+  auto progress = [&](size_t index, const DisassemblyStep& step) {
+    if (!a.quiet) std::fprintf(stderr, "mms assemble: %s\n", describe(scene, index, step).c_str());
   };
   const DisassemblyResult r = planner.solve(Termination(a.timeLimit, sigintFlag()), progress);
   if (interruptRequested()) throw Interrupted();
@@ -77,16 +90,8 @@ int assemble(const AssembleArgs& a) {
   writeFileAtomically((dir / "disassembly.json").string(), summary.dump(1) + "\n");
   if (!a.svg.empty()) writeFileAtomically(a.svg, renderSvg(r.finalScene, &whole));
 
-  for (size_t k = 0; k < r.steps.size(); ++k) {
-    const DisassemblyStep& s = r.steps[k];
-    std::vector<size_t> helpers;
-    for (const size_t p : s.parts)
-      if (std::find(s.removed.begin(), s.removed.end(), p) == s.removed.end()) helpers.push_back(p);
-    std::printf("step %zu: %s out%s%s (%s, %.3f s, %zu waypoints)\n", k + 1,
-                partList(scene, s.removed).c_str(), helpers.empty() ? "" : "; ",
-                helpers.empty() ? "" : (partList(scene, helpers) + " makes room").c_str(),
-                s.parts.size() == 1 ? "one hand" : "two hands", s.seconds, s.waypoints.size());
-  }
+  for (size_t k = 0; k < r.steps.size(); ++k)
+    std::printf("%s\n", describe(scene, k, r.steps[k]).c_str());
   std::printf("%s: %zu steps, %zu planner runs, %.3f s; files in %s\n", a.scene.c_str(),
               r.steps.size(), r.attempts, r.seconds, a.output.c_str());
   if (!r.complete()) {

@@ -67,9 +67,8 @@ Scene DisassemblyPlanner::stepScene(const std::vector<size_t>& moving) const {
 // obstacles only (the other moving part is ignored): points of the exact free space at its
 // angle that lie outside the box and in the same cell as its start, so reachable when alone.
 // Best first: farthest from the box, so parked parts stay out of the way of the later ones.
-std::vector<Pose> DisassemblyPlanner::targetsFor(const Scene& step, size_t robot,
-                                                 size_t count) const {
-  const CollisionChecker checker(step);
+std::vector<Pose> DisassemblyPlanner::targetsFor(const Scene& step, const CollisionChecker& checker,
+                                                 size_t robot, size_t count) const {
   const Scene contact = withContactShapes(step, checker);
   const SliceWorld world(contact, robot);
   const Pose start = step.robots[robot].start;
@@ -119,7 +118,7 @@ bool DisassemblyPlanner::trySingle(size_t part, const Termination& stop, Disasse
   const Robot& original = scene_.robots[part];
   Pose goal = original.goal;
   if (samePose(original.start, original.goal)) {
-    const auto targets = targetsFor(step, 0, 1);
+    const auto targets = targetsFor(step, CollisionChecker(step), 0, 1);
     if (targets.empty()) return false;  // exact for a translating part: it cannot leave alone
     goal = targets.front();
   }
@@ -149,7 +148,7 @@ bool DisassemblyPlanner::tryPair(size_t a, size_t b, int returning, size_t round
     else if (!samePose(original.start, original.goal))
       goals[m] = {original.goal};
     else
-      goals[m] = targetsFor(step, m, 6);
+      goals[m] = targetsFor(step, checker, m, 6);
     if (goals[m].empty()) return false;  // it cannot leave even with the other one gone
   }
   bool paired = false;
@@ -176,22 +175,10 @@ bool DisassemblyPlanner::tryPair(size_t a, size_t b, int returning, size_t round
 }
 
 DisassemblyResult DisassemblyPlanner::solve(
-    const Termination& stop, const std::function<void(const std::string&)>& progress) {
+    const Termination& stop, const std::function<void(size_t, const DisassemblyStep&)>& progress) {
   Stopwatch clock;
   DisassemblyResult out;
   path_ = {startConfig(scene_)};
-  auto say = [&](const DisassemblyStep& s) {
-    if (!progress) return;
-    std::string text = "step " + std::to_string(out.steps.size()) + ": ";
-    for (size_t k = 0; k < s.parts.size(); ++k) {
-      const size_t p = s.parts[k];
-      const bool leaves = std::find(s.removed.begin(), s.removed.end(), p) != s.removed.end();
-      text += (k ? ", " : "") + scene_.robots[p].name + (leaves ? " out" : " makes room");
-    }
-    char t[48];
-    std::snprintf(t, sizeof t, " (%.3f s)", s.seconds);
-    progress(text + t);
-  };
   while (!stop()) {
     std::vector<size_t> left;
     for (size_t i = 0; i < done_.size(); ++i)
@@ -221,7 +208,7 @@ DisassemblyResult DisassemblyPlanner::solve(
       out.stuck = left;
       break;
     }
-    say(out.steps.back());
+    if (progress) progress(out.steps.size() - 1, out.steps.back());
   }
   if (out.stuck.empty())
     for (size_t i = 0; i < done_.size(); ++i)

@@ -12,9 +12,9 @@
 // that left stay parked where they went, as obstacles for the later steps, so the whole disassembly
 // is one continuous motion of all parts, certified at the end.
 #include <functional>
-#include <string>
 #include <vector>
 
+#include "geometry/CollisionChecker.h"
 #include "scene/Scene.h"
 #include "util/Termination.h"
 
@@ -55,15 +55,15 @@ class DisassemblyPlanner {
   DisassemblyPlanner(const Scene& scene, DisassemblySettings settings = {});
 
   DisassemblyResult solve(const Termination& stop,
-                          const std::function<void(const std::string&)>& progress = {});
+                          const std::function<void(size_t, const DisassemblyStep&)>& progress = {});
 
  private:
-  struct Attempt;
   bool trySingle(size_t part, const Termination& stop, DisassemblyResult& out);
   bool tryPair(size_t a, size_t b, int returning, size_t rounds, const Termination& stop,
                DisassemblyResult& out);
   Scene stepScene(const std::vector<size_t>& moving) const;
-  std::vector<Pose> targetsFor(const Scene& step, size_t robot, size_t count) const;
+  std::vector<Pose> targetsFor(const Scene& step, const CollisionChecker& checker, size_t robot,
+                               size_t count) const;
   void record(DisassemblyStep step, DisassemblyResult& out);
 
   Scene scene_;
