@@ -20,9 +20,7 @@ using namespace mms::test;
 namespace {
 
 Box partBox(const Scene& s, size_t robot, const Pose& p) {
-  Ring r;
-  transformRing(s.robots[robot].shape, p, r);
-  return boundingBox(r);
+  return boundingBox(placedRing(s.robots[robot].shape, p));
 }
 
 Box obstaclesBox(const Scene& s) {

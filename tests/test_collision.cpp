@@ -14,12 +14,6 @@ using namespace mms;
 
 namespace {
 
-Ring placedRing(const Ring& shape, const Pose& pose) {
-  Ring out;
-  transformRing(shape, pose, out);
-  return out;
-}
-
 // Exact reference: the placed ring lies inside the bounds and its interior meets no
 // obstacle's interior. Obstacles whose boxes miss the ring's box cannot meet it (box tests in
 // doubles are exact).

@@ -24,12 +24,6 @@ Box obstaclesBox(const Scene& scene) {
   return b;
 }
 
-Ring placed(const Robot& r, const Pose& p) {
-  Ring out;
-  transformRing(r.shape, p, out);
-  return out;
-}
-
 bool samePose(const Pose& a, const Pose& b) {
   return a.x == b.x && a.y == b.y && a.theta == b.theta;
 }
@@ -54,7 +48,7 @@ Scene DisassemblyPlanner::stepScene(const std::vector<size_t>& moving) const {
   s.obstacles = scene_.obstacles;
   for (size_t i = 0; i < scene_.robots.size(); ++i)
     if (std::find(moving.begin(), moving.end(), i) == moving.end())
-      s.obstacles.push_back(placed(scene_.robots[i], pose_[i]));
+      s.obstacles.push_back(placedRing(scene_.robots[i].shape, pose_[i]));
   for (const size_t i : moving) {
     Robot r = scene_.robots[i];
     r.start = r.goal = pose_[i];
@@ -87,7 +81,7 @@ std::vector<Pose> DisassemblyPlanner::targetsFor(const Scene& step, const Collis
       const auto p = samplePointInCell(outside, c, rng, 32);
       if (!p || free.locate(*p) != startCell) continue;
       const Pose q{p->x, p->y, start.theta};
-      found.push_back({boundingBox(placed(step.robots[robot], q)).distance(box_), q});
+      found.push_back({boundingBox(placedRing(step.robots[robot].shape, q)).distance(box_), q});
     }
   std::sort(found.begin(), found.end(),
             [](const auto& a, const auto& b) { return a.first > b.first; });

@@ -64,4 +64,11 @@ inline void transformRing(const Ring& in, const Pose& pose, Ring& out) {
   for (size_t i = 0; i < in.size(); ++i) out[i] = t(in[i]);
 }
 
+/// The ring placed at `pose`, as a new ring (outside hot loops).
+inline Ring placedRing(const Ring& shape, const Pose& pose) {
+  Ring out;
+  transformRing(shape, pose, out);
+  return out;
+}
+
 }  // namespace mms

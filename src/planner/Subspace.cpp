@@ -8,11 +8,7 @@ namespace {
 std::vector<Ring> placedRings(const Scene& scene,
                               const std::vector<std::pair<size_t, Pose>>& held) {
   std::vector<Ring> out;
-  for (const auto& [robot, pose] : held) {
-    Ring r;
-    transformRing(scene.robots[robot].shape, pose, r);
-    out.push_back(std::move(r));
-  }
+  for (const auto& [robot, pose] : held) out.push_back(placedRing(scene.robots[robot].shape, pose));
   return out;
 }
 }  // namespace

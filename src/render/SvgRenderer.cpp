@@ -45,12 +45,6 @@ std::string points(const Ring& ring) {
   return s;
 }
 
-Ring placed(const Ring& shape, const Pose& pose) {
-  Ring out;
-  transformRing(shape, pose, out);
-  return out;
-}
-
 // Cumulative motion along the path (sum over robots of |dp| + radius * |dtheta|), used to
 // space ghosts and to time the animation by distance rather than by waypoint count.
 std::vector<double> cumulativeEffort(const Scene& scene, const Path& path) {
@@ -149,8 +143,8 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
     for (int g = 1; g < o.ghosts && total > 0; ++g)
       for (size_t i = 0; i < k; ++i)
         svg << "<polygon points=\""
-            << points(
-                   placed(scene.robots[i].shape, poseAtEffort(*path, acc, i, total * g / o.ghosts)))
+            << points(placedRing(scene.robots[i].shape,
+                                 poseAtEffort(*path, acc, i, total * g / o.ghosts)))
             << "\"/>\n";
     svg << "</g>\n";
   }
@@ -158,12 +152,12 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
          "stroke-width=\""
       << fmt(stroke) << "\">\n";
   for (const Robot& r : scene.robots)
-    svg << "<polygon points=\"" << points(placed(r.shape, r.start)) << "\"/>\n";
+    svg << "<polygon points=\"" << points(placedRing(r.shape, r.start)) << "\"/>\n";
   svg << "</g>\n<g id=\"goals\" fill=\"#d62728\" fill-opacity=\"0.55\" stroke=\"#7f1516\" "
          "stroke-width=\""
       << fmt(stroke) << "\">\n";
   for (const Robot& r : scene.robots)
-    svg << "<polygon points=\"" << points(placed(r.shape, r.goal)) << "\"/>\n";
+    svg << "<polygon points=\"" << points(placedRing(r.shape, r.goal)) << "\"/>\n";
   svg << "</g>\n";
 
   if (path && !path->waypoints.empty() && o.animate) {
