@@ -219,10 +219,11 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
   const TwoRobotStats& ts = res.stats;
   j["graph_nodes"] = ts.graphNodes;
   j["graph_edges"] = ts.graphEdges;
-  j["parameters"] = {{"n_theta", settings.nTheta},
-                     {"n_lines", settings.nLines},
-                     {"n_fixings", settings.nFixings},
-                     {"expand_share", settings.expandShare}};
+  const nlohmann::json parameters = {{"n_theta", settings.nTheta},
+                                     {"n_lines", settings.nLines},
+                                     {"n_fixings", settings.nFixings},
+                                     {"expand_share", settings.expandShare}};
+  j["parameters"] = parameters;
   j["manifolds"] = {{"subspaces", ts.subspaces},
                     {"slices", ts.manifolds.slices},
                     {"lines", ts.manifolds.lines},
@@ -243,11 +244,7 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
   const TwoRobotStats& st = res.stats;
   path.extra = {{"planner", "mms"},
                 {"seed", a.seed},
-                {"parameters",
-                 {{"n_theta", settings.nTheta},
-                  {"n_lines", settings.nLines},
-                  {"n_fixings", settings.nFixings},
-                  {"expand_share", settings.expandShare}}},
+                {"parameters", parameters},
                 {"statistics",
                  {{"subspaces", st.subspaces},
                   {"slices", st.manifolds.slices},
