@@ -49,11 +49,11 @@ TEST(Interrupt, CtrlCEndsBenchWithoutRecordingInterruptedRuns) {
   TempDir dir;
   const std::string out = dir.path("b");
   Stopwatch clock;
-  const Outcome r =
-      runCommand("( setsid " + std::string(MMS_BINARY) + " bench " +
-                 quote(scenario("one-robot/sealed-ring.json")) +
-                 " --planners mms --runs 2 --time-limit 30 --jobs 2 -o " + quote(out) +
-                 " & pid=$!; sleep 2; /bin/kill -INT -- -$pid; wait $pid; echo \"rc=$?\" )");
+  const Outcome r = runCommand(
+      "( setsid " + std::string(MMS_BINARY) + " bench " +
+      quote(scenario("one-robot/sealed-ring.json")) +
+      " --planners mms --runs 2 --time-limit 30 --memory-limit 0 --jobs 2 -o " + quote(out) +
+      " & pid=$!; sleep 2; /bin/kill -INT -- -$pid; wait $pid; echo \"rc=$?\" )");
   EXPECT_LT(clock.seconds(), 20.0);
   EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.out << r.err;
   EXPECT_NE(r.err.find("interrupted"), std::string::npos) << r.err;
@@ -66,7 +66,7 @@ TEST(Interrupt, BenchStopsWhenARunWasInterrupted) {
   const std::string out = dir.path("b");
   const Outcome r = runCommand(
       "( " + std::string(MMS_BINARY) + " bench " + quote(scenario("one-robot/sealed-ring.json")) +
-      " --planners mms --runs 2 --time-limit 30 --jobs 1 -o " + quote(out) +
+      " --planners mms --runs 2 --time-limit 30 --memory-limit 0 --jobs 1 -o " + quote(out) +
       " & pid=$!; sleep 2; /bin/kill -INT $(pgrep -P $pid); wait $pid; echo \"rc=$?\" )");
   EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.out << r.err;
   EXPECT_EQ(readFile(out + "/runs.jsonl"), "");

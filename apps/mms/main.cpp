@@ -209,9 +209,15 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 1e6));
-  benchCmd->add_option("--memory-limit", ba.memoryMb, "MB of address space per run")
+  benchCmd->add_option("--memory-limit", ba.memoryMb, "MB of address space per run (0: none)")
       ->capture_default_str()
-      ->check(CLI::Range(64.0, 1e7));
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {
+            double mb = -1;
+            if (!CLI::detail::lexical_cast(v, mb)) return "not a number: " + v;
+            return mb == 0 || (mb >= 64 && mb <= 1e7) ? "" : "must be 0 (no limit) or 64 to 1e7 MB";
+          },
+          "0|64..1e7"));
   benchCmd->add_option(
       "--sweep-pacman", ba.sweepPacman,
       "Comma-separated Pacman tightness values to add as generated scenes, e.g. 0,0.5,0.9");
