@@ -4,6 +4,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make
+  clang libclang-rt-14-dev
   libcgal-dev libgmp-dev libmpfr-dev
   libboost-graph-dev libboost-filesystem-dev libeigen3-dev
   libompl-dev

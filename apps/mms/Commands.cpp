@@ -8,6 +8,7 @@
 #include "render/SvgRenderer.h"
 #include "scene/Errors.h"
 #include "scene/Generators.h"
+#include "scene/RandomScene.h"
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
 
@@ -85,6 +86,8 @@ int scenario(const ScenarioArgs& a) {
     s = assemblyOneScene(a.slack);
   else if (a.name == "assembly-2")
     s = assemblyTwoScene(a.slack, a.mPartsOnly);
+  else if (a.name == "random")
+    s = randomScene({a.seed, a.robots, a.obstacles});
   else
     s = randomPolygonsTwoRobots(a.seed);
   // The generators must produce valid scenes: validate before writing.

@@ -60,6 +60,7 @@ struct ScenarioArgs {
   uint64_t seed = 1;
   double slack = 0.05;
   bool mPartsOnly = false;
+  int robots = 0, obstacles = -1;  // random: 0 / -1 = drawn from the seed
 };
 int scenario(const ScenarioArgs& a);
 

@@ -8,18 +8,8 @@
 #include "Commands.h"
 #include "baselines/OmplPlanner.h"
 #include "scene/Errors.h"
+#include "util/CommandBoundary.h"
 #include "util/Interrupt.h"
-
-namespace {
-
-std::string oneLine(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace mms::cli;
@@ -142,21 +132,28 @@ int main(int argc, char** argv) {
   auto* scenarioCmd = app.add_subcommand(
       "scenario",
       "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
-      "random-polygons (--seed), assembly-1 and assembly-2 (--slack)");
+      "random-polygons (--seed), assembly-1 and assembly-2 (--slack), or a random test scene "
+      "(random: --seed, --robots, --obstacles)");
   scenarioCmd
       ->add_option("NAME", sa.name,
-                   "pacman, viking-helmet, random-polygons, assembly-1 or assembly-2")
+                   "pacman, viking-helmet, random-polygons, assembly-1, assembly-2 or random")
       ->required()
       ->check(CLI::IsMember(
-          {"pacman", "viking-helmet", "random-polygons", "assembly-1", "assembly-2"}));
+          {"pacman", "viking-helmet", "random-polygons", "assembly-1", "assembly-2", "random"}));
   scenarioCmd->add_option("-o,--output", sa.output, "Scene file to write")->required();
   scenarioCmd
       ->add_option("--tightness", sa.tightness,
                    "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.999));
-  scenarioCmd->add_option("--seed", sa.seed, "random-polygons: the seed of the geometry")
+  scenarioCmd->add_option("--seed", sa.seed, "random-polygons, random: the seed of the geometry")
       ->capture_default_str();
+  scenarioCmd->add_option("--robots", sa.robots, "random: 1 or 2 robots (default: from the seed)")
+      ->check(CLI::Range(1, 2));
+  scenarioCmd
+      ->add_option("--obstacles", sa.obstacles,
+                   "random: how many obstacles (default: from the seed)")
+      ->check(CLI::Range(0, 100000));
   scenarioCmd
       ->add_option("--slack", sa.slack,
                    "assembly-1/2: the play between parts and walls (the smaller, the tighter)")
@@ -253,47 +250,38 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "mms: " << oneLine(e.what()) << " (see mms --help)\n";
+    std::cerr << "mms: " << mms::oneLine(e.what()) << " (see mms --help)\n";
     return 2;
   }
 
-  try {
-    if (*validateCmd) return validate(va);
-    if (*checkCmd) return check(ca);
-    if (*renderCmd) return render(ra);
-    if (*planCmd || *assembleCmd) mms::sigintFlag();  // from here on, Ctrl-C ends them cleanly
-    if (*planCmd) return plan(pa);
-    if (*scenarioCmd) return scenario(sa);
-    if (*assembleCmd) return assemble(aa);
-    if (*benchCmd) {
-      ba.planners.clear();
-      for (const std::string& p : split(plannersList, ',')) {
-        if (std::find(plannerNames.begin(), plannerNames.end(), p) == plannerNames.end())
-          throw mms::InputError("--planners: unknown planner '" + p + "'");
-        ba.planners.push_back(p);
-      }
-      if (ba.planners.empty()) throw mms::InputError("--planners: no planner given");
-      unsigned k = 0, n = 0;
-      char extra = 0;
-      if (std::sscanf(shard.c_str(), "%u/%u%c", &k, &n, &extra) != 2 || n == 0 || k == 0 || k > n)
-        throw mms::InputError("--shard: expected K/N with 1 <= K <= N, found '" + shard + "'");
-      ba.shardIndex = k;
-      ba.shardCount = n;
-      return bench(ba);
-    }
-    if (*mergeCmd) return benchMerge(mergeDirs, mergeOut);
-  } catch (const mms::InputError& e) {
-    std::cerr << oneLine(e.what()) << "\n";
-    return 2;
-  } catch (const mms::Interrupted&) {
-    std::cerr << "mms: interrupted (Ctrl-C); no output written\n";
-    return 130;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "mms: out of memory\n";
-    return 3;
-  } catch (const std::exception& e) {
-    std::cerr << "mms: internal error: " << oneLine(e.what()) << "\n";
-    return 3;
-  }
-  return 2;
+  return mms::runAtBoundary(
+      [&]() -> int {
+        if (*validateCmd) return validate(va);
+        if (*checkCmd) return check(ca);
+        if (*renderCmd) return render(ra);
+        if (*planCmd || *assembleCmd) mms::sigintFlag();  // from here on, Ctrl-C ends them cleanly
+        if (*planCmd) return plan(pa);
+        if (*scenarioCmd) return scenario(sa);
+        if (*assembleCmd) return assemble(aa);
+        if (*benchCmd) {
+          ba.planners.clear();
+          for (const std::string& p : split(plannersList, ',')) {
+            if (std::find(plannerNames.begin(), plannerNames.end(), p) == plannerNames.end())
+              throw mms::InputError("--planners: unknown planner '" + p + "'");
+            ba.planners.push_back(p);
+          }
+          if (ba.planners.empty()) throw mms::InputError("--planners: no planner given");
+          unsigned k = 0, n = 0;
+          char extra = 0;
+          if (std::sscanf(shard.c_str(), "%u/%u%c", &k, &n, &extra) != 2 || n == 0 || k == 0 ||
+              k > n)
+            throw mms::InputError("--shard: expected K/N with 1 <= K <= N, found '" + shard + "'");
+          ba.shardIndex = k;
+          ba.shardCount = n;
+          return bench(ba);
+        }
+        if (*mergeCmd) return benchMerge(mergeDirs, mergeOut);
+        return 2;  // a subcommand is required, so this is not reached
+      },
+      std::cerr);
 }

@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "geometry/PolygonOps.h"
+#include "util/Termination.h"
 
 namespace mms {
 
@@ -99,9 +100,43 @@ std::vector<PolygonWithHoles> reachingSums(const std::vector<Polygon>& obstacles
         1e-9 * (1 + std::fabs(o.xmax) + std::fabs(o.ymax) + std::fabs(o.xmin) + std::fabs(o.ymin));
     const Box sumBox{o.xmin + negBox.xmin - m, o.ymin + negBox.ymin - m, o.xmax + negBox.xmax + m,
                      o.ymax + negBox.ymax + m};
-    if (sumBox.overlaps(regionBox)) sums.push_back(CGAL::minkowski_sum_2(obstacles[i], neg));
+    if (!sumBox.overlaps(regionBox)) continue;
+    checkpoint();
+    sums.push_back(CGAL::minkowski_sum_2(obstacles[i], neg));
   }
   return sums;
+}
+
+// free minus the union of the sums. Among thousands of obstacles one union takes seconds, so
+// it is built in groups, joined pairwise, with a checkpoint between steps: the planner's time
+// limit holds within a fraction of a second.
+void subtractUnion(PolygonSet& free, const std::vector<PolygonWithHoles>& sums) {
+  constexpr size_t kGroup = 32;
+  if (sums.size() <= kGroup) {
+    PolygonSet forbidden;
+    forbidden.join(sums.begin(), sums.end());
+    free.difference(forbidden);
+    return;
+  }
+  // Pointers: a PolygonSet has no move constructor, and copying one copies its arrangement.
+  std::vector<std::unique_ptr<PolygonSet>> sets;
+  for (size_t i = 0; i < sums.size(); i += kGroup) {
+    checkpoint();
+    sets.push_back(std::make_unique<PolygonSet>());
+    sets.back()->join(sums.begin() + i, sums.begin() + std::min(sums.size(), i + kGroup));
+  }
+  while (sets.size() > 1) {
+    std::vector<std::unique_ptr<PolygonSet>> next;
+    for (size_t i = 0; i + 1 < sets.size(); i += 2) {
+      checkpoint();
+      sets[i]->join(*sets[i + 1]);
+      next.push_back(std::move(sets[i]));
+    }
+    if (sets.size() % 2) next.push_back(std::move(sets.back()));
+    sets = std::move(next);
+  }
+  checkpoint();
+  free.difference(*sets.front());
 }
 
 }  // namespace
@@ -153,9 +188,7 @@ Slice::Slice(const Slice& base, const std::vector<Ring>& extraObstacles, PointLo
   im->neg = base.impl_->neg;
   im->regionBox = base.impl_->regionBox;
   im->free = base.impl_->free;
-  PolygonSet forbidden;
-  forbidden.join(sums.begin(), sums.end());
-  im->free.difference(forbidden);
+  subtractUnion(im->free, sums);
   impl_ = std::move(im);
   index(strategy);
 }
@@ -194,11 +227,7 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
   std::vector<PolygonWithHoles> sums =
       reachingSums(w.obstacles, w.obstacleBoxes, neg, impl_->regionBox);
   impl_->free = PolygonSet(region);
-  if (!sums.empty()) {
-    PolygonSet forbidden;
-    forbidden.join(sums.begin(), sums.end());
-    impl_->free.difference(forbidden);
-  }
+  if (!sums.empty()) subtractUnion(impl_->free, sums);
   index(strategy);
 }
 

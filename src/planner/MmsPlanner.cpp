@@ -100,11 +100,27 @@ MmsResult::Status MmsPlanner::solveTranslation(const Pose& start, const Pose& go
 MmsResult MmsPlanner::solve(const Pose& start, const Pose& goal, const Termination& stop,
                             const std::function<void(const MmsStats&)>& progress) {
   Stopwatch total;
+  const StopScope scope(stop);
+  try {
+    return solveRounds(start, goal, stop, progress);
+  } catch (const Stopped&) {
+    // The manifold under construction is dropped; the roadmap stays as it was before it.
+    return finish(MmsResult{},
+                  stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound,
+                  total.seconds());
+  }
+}
+
+MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Termination& stop,
+                                  const std::function<void(const MmsStats&)>& progress) {
+  Stopwatch total;
   MmsResult result;
   scene_.robots[0].start = start;
   scene_.robots[0].goal = goal;
-  if (scene_.robots[0].motion == Motion::Translate)
-    return finish(result, solveTranslation(start, goal, result), total.seconds());
+  if (scene_.robots[0].motion == Motion::Translate) {
+    const MmsResult::Status status = solveTranslation(start, goal, result);
+    return finish(result, status, total.seconds());  // timed after the solve, which counts
+  }
   // Start and goal enter through lines at their positions (a line holds every angle).
   Subspace& sub = subspace();
   const size_t startLine = sub.addLine({start.x, start.y}),
@@ -125,8 +141,12 @@ MmsResult MmsPlanner::solve(const Pose& start, const Pose& goal, const Terminati
   };
   while (true) {
     ++stats_.rounds;
-    while (slices().size() < targetSlices && !stop()) addSlice(angles_.next()), report(false);
-    while (lines().size() < targetLines && !stop()) sub.addLine(nextLinePoint()), report(false);
+    try {
+      while (slices().size() < targetSlices && !stop()) addSlice(angles_.next()), report(false);
+      while (lines().size() < targetLines && !stop()) sub.addLine(nextLinePoint()), report(false);
+    } catch (const Stopped&) {
+      // The limit struck inside a manifold: it is dropped, the search runs on the rest.
+    }
     Stopwatch search;
     const auto nodes = graph_.path(size_t(from), size_t(to));
     stats_.searchSeconds += search.seconds();

@@ -75,6 +75,8 @@ class MmsPlanner {
  private:
   const Subspace& subspace() const { return *subspaces_.front(); }
   Subspace& subspace() { return *subspaces_.front(); }
+  MmsResult solveRounds(const Pose& start, const Pose& goal, const Termination& stop,
+                        const std::function<void(const MmsStats&)>& progress);
   Vec2 nextLinePoint();
   void addSlice(double theta);
   MmsResult::Status solveTranslation(const Pose& start, const Pose& goal, MmsResult& result);

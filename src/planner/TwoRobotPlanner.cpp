@@ -17,13 +17,22 @@ TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
     translates_[r] = scene_.robots[r].motion == Motion::Translate;
     worlds_[r] = std::make_unique<SliceWorld>(contactScene_, r);
     angles_[r] = std::make_unique<AngleSequence>(settings_.nTheta, rng_.uniform(0, 2 * M_PI));
+  }
+}
+
+// The robots' base slices (a translating robot's one angle, a rigid robot's first n_theta),
+// built in solve() so that their cost, up to seconds among many obstacles, counts against its
+// time limit.
+void TwoRobotPlanner::buildBaseSlices(const Termination& stop) {
+  for (size_t r = 0; r < 2 && !stop(); ++r) {
+    if (!base_[r].empty()) continue;
     if (translates_[r]) {
       Stopwatch watch;
       base_[r].emplace_back(*worlds_[r],
                             exact::rationalAngleNear(scene_.robots[r].start.theta, 30));
       stats_.baseSliceSeconds += watch.seconds();
     } else {
-      addAngles(r, settings_.nTheta, Termination(1e9));
+      addAngles(r, settings_.nTheta, stop);
     }
   }
 }
@@ -111,7 +120,23 @@ TwoRobotResult TwoRobotPlanner::finish(TwoRobotResult r, MmsResult::Status statu
 TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
                                       const std::function<void(const TwoRobotStats&)>& progress) {
   clock_ = Stopwatch();
+  const StopScope scope(stop);
+  try {
+    return solveRounds(stop, progress);
+  } catch (const Stopped&) {
+    // The manifold under construction is dropped (see StopScope).
+    return finish(TwoRobotResult{},
+                  stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
+  }
+}
+
+TwoRobotResult TwoRobotPlanner::solveRounds(
+    const Termination& stop, const std::function<void(const TwoRobotStats&)>& progress) {
   TwoRobotResult result;
+  buildBaseSlices(stop);
+  if (stop())
+    return finish(result,
+                  stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
   // Start and goal fixings: each robot held at its start and at its goal. A translating
   // robot's poses lie in its one slice; a rigid robot's on lines 0 (start) and 1 (goal).
   std::array<Fixing, 2> start, goal;
@@ -131,14 +156,19 @@ TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
   Stopwatch sinceReport;
   while (true) {
     ++stats_.rounds;
-    for (size_t r = 0; r < 2 && !stop(); ++r)
-      while (stats_.fixings[r] < target + 2 && !stop()) {
-        if (!grow(r, stop)) break;
-        if (progress && sinceReport.seconds() >= 1.0) {
-          progress(finish(result, MmsResult::Status::NotFound).stats);
-          sinceReport = Stopwatch();
+    try {
+      for (size_t r = 0; r < 2 && !stop(); ++r)
+        while (stats_.fixings[r] < target + 2 && !stop()) {
+          if (!grow(r, stop)) break;
+          if (progress && sinceReport.seconds() >= 1.0) {
+            progress(finish(result, MmsResult::Status::NotFound).stats);
+            sinceReport = Stopwatch();
+          }
         }
-      }
+    } catch (const Stopped&) {
+      // The limit struck inside a manifold: it is dropped, the search runs on the rest. No
+      // round follows, so subspaces cut short never get out of step with the base angles.
+    }
     Stopwatch search;
     const auto nodes = graph_.path(size_t(from), size_t(to));
     stats_.searchSeconds += search.seconds();

@@ -89,6 +89,9 @@ class TwoRobotPlanner {
     long parent;       // the subspace whose cell it was drawn from, or -1
   };
   // Growth (TwoRobotGrowth.cpp): new fixings and the subspaces they hold.
+  TwoRobotResult solveRounds(const Termination& stop,
+                             const std::function<void(const TwoRobotStats&)>& progress);
+  void buildBaseSlices(const Termination& stop);
   bool grow(size_t robot, const Termination& stop);
   Fixing fixingAt(size_t robot, const Slice& slice, size_t manifold, Vec2 p, long parent) const;
   bool uniformFixing(size_t robot, Fixing& out);

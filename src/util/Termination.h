@@ -29,6 +29,32 @@ class Termination {
   const std::atomic<bool>* cancel_;
 };
 
+/// Thrown by checkpoint() once the termination condition of the enclosing StopScope holds.
+struct Stopped {};
+
+/// One exact manifold among thousands of obstacles takes seconds inside CGAL calls that no
+/// Termination reaches. A planner's solve() opens a StopScope; that work calls checkpoint()
+/// between its steps, which throws Stopped once the scope's condition holds, and solve() drops
+/// the unfinished manifold. Per thread: a thread that builds manifolds opens its own scope.
+class StopScope {
+ public:
+  explicit StopScope(const Termination& stop) : previous_(current()) { current() = &stop; }
+  ~StopScope() { current() = previous_; }
+  StopScope(const StopScope&) = delete;
+  StopScope& operator=(const StopScope&) = delete;
+  static const Termination*& current() {
+    thread_local const Termination* stop = nullptr;
+    return stop;
+  }
+
+ private:
+  const Termination* previous_;
+};
+
+inline void checkpoint() {
+  if (const Termination* stop = StopScope::current(); stop && (*stop)()) throw Stopped{};
+}
+
 /// Seconds since construction, for phase timings.
 class Stopwatch {
  public:

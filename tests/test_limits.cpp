@@ -1,0 +1,62 @@
+// Limits inside exact geometry: one slice among a thousand obstacles takes longer than a short
+// time limit, so its construction must give way to the limit (StopScope / checkpoint), and the
+// planners must then end with "not found" instead of running the slice to its end.
+#include <gtest/gtest.h>
+
+#include "Support.h"
+#include "geometry/Exact.h"
+#include "manifolds/Slice.h"
+#include "planner/MmsPlanner.h"
+#include "planner/TwoRobotPlanner.h"
+#include "scene/RandomScene.h"
+#include "util/Termination.h"
+
+namespace mms {
+namespace {
+
+Scene crowded(int robots) { return randomScene({3, robots, 1000}); }
+
+TEST(Limits, SliceConstructionStopsAtTheScopesLimit) {
+  const Scene scene = crowded(1);
+  ASSERT_EQ(scene.obstacles.size(), 1000u);
+  const SliceWorld world(scene, 0);
+  const auto angle = exact::rationalAngleNear(0.3, 30);
+  {
+    const Termination expired(0);
+    const StopScope scope(expired);
+    EXPECT_THROW(Slice(world, angle), Stopped);
+  }
+  // Outside any scope nothing stops it, and the scope was closed on the way out.
+  EXPECT_EQ(StopScope::current(), nullptr);
+  const Slice whole(world, angle);
+  EXPECT_GT(whole.fscCount(), 0u);
+}
+
+TEST(Limits, OneRobotPlannerEndsWhenTheLimitStrikesInsideASlice) {
+  const Scene scene = crowded(1);
+  MmsPlanner planner(scene, 0, {});
+  const MmsResult r =
+      planner.solve(scene.robots[0].start, scene.robots[0].goal, Termination(0.001));
+  EXPECT_EQ(r.status, MmsResult::Status::NotFound);
+  EXPECT_EQ(planner.slices().size(), 0u);  // the slice under way was dropped
+  EXPECT_EQ(StopScope::current(), nullptr);
+  // The planner stays usable: a second query with time builds slices.
+  const MmsResult again =
+      planner.solve(scene.robots[0].start, scene.robots[0].goal, Termination(test::planSeconds(5)));
+  EXPECT_GT(planner.slices().size(), 0u);
+  if (again.status == MmsResult::Status::Found) {
+    EXPECT_TRUE(again.certificate.ok);
+  }
+}
+
+TEST(Limits, TwoRobotPlannerBuildsNothingBeforeSolve) {
+  const Scene scene = crowded(2);
+  TwoRobotPlanner planner(scene);
+  const TwoRobotResult r = planner.solve(Termination(0.001));
+  EXPECT_EQ(r.status, MmsResult::Status::NotFound);
+  EXPECT_EQ(r.stats.subspaces, 0u);
+  EXPECT_EQ(r.stats.baseSliceSeconds, 0.0);  // the base slices were not built before solve()
+}
+
+}  // namespace
+}  // namespace mms
