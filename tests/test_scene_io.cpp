@@ -160,6 +160,14 @@ INSTANTIATE_TEST_SUITE_P(
                   j["robots"][0]["start"] = {0.2, 1, 0};
                 },
                 nullptr, "robots[0].start", "robot 'a' is not inside the bounds"},
+        // Found by fuzzing: a vertex off a line by 1e-320 put the shrunk shape's vertex at
+        // infinity, which then reached CGAL's exact predicates.
+        BadCase{"robot_vertex_off_by_denormal",
+                [](json& j) {
+                  j["robots"][0]["shape"] = {{0, 0},     {1, 0},   {1, 1},         {1.5, 1},
+                                             {1.5, 1.5}, {1, 1.5}, {1.01e-320, 2}, {0, 2}};
+                },
+                nullptr, "robots[0].shape", "smaller than the contact tolerance"},
         BadCase{"robot_larger_than_bounds",
                 [](json& j) { j["robots"][0]["shape"] = square(-6, -6, 12); }, nullptr,
                 "robots[0].start", "not inside the bounds"},
@@ -168,15 +176,9 @@ INSTANTIATE_TEST_SUITE_P(
                   j["robots"][0]["start"] = {4.2, 5, 0};
                 },
                 nullptr, "robots[0].start", "robot 'a' collides with obstacles[0]"},
-        BadCase{"goal_in_obstacle",
-                [](json& j) {
-                  j["robots"][1]["goal"] = {5, 6.3, 0.3};
-                },
+        BadCase{"goal_in_obstacle", [](json& j) { j["robots"][1]["goal"] = {5, 6.3, 0.3}; },
                 nullptr, "robots[1].goal", "robot 'b' collides with obstacles[0]"},
-        BadCase{"robots_overlap_at_goal",
-                [](json& j) {
-                  j["robots"][1]["goal"] = {8.5, 8.6, 0};
-                },
+        BadCase{"robots_overlap_at_goal", [](json& j) { j["robots"][1]["goal"] = {8.5, 8.6, 0}; },
                 nullptr, "robots[1].goal", "robot 'b' collides with robot 'a'"},
         BadCase{"duplicate_names", [](json& j) { j["robots"][1]["name"] = "a"; }, nullptr,
                 "robots[1].name", "duplicate robot name 'a'"},
@@ -334,4 +336,21 @@ TEST(Cli, UsageErrorsExitTwoWithOneLine) {
   const Outcome sub = runMms("check --help");
   EXPECT_EQ(sub.code, 0);
   EXPECT_NE(sub.out.find("--max-evaluations"), std::string::npos);
+}
+
+// Found by fuzzing: a newline inside a string the message quotes broke the one-line rule for
+// callers of the library (the command line flattened it, other callers did not).
+TEST(SceneErrors, MessagesStayOneLineWhateverTheInputQuotes) {
+  json j = baseScene();
+  j["format"] = "mms-sc\ne/1\r";
+  j["robots"][0]["name"] = "bad\nname";
+  try {
+    mms::parseScene(j, "in.json");
+    FAIL() << "accepted";
+  } catch (const mms::InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    EXPECT_EQ(m.find('\r'), std::string::npos) << m;
+    EXPECT_NE(m.find("mms-sc?e/1?"), std::string::npos) << m;
+  }
 }

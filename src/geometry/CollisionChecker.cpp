@@ -1,6 +1,7 @@
 #include "geometry/CollisionChecker.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -31,6 +32,11 @@ ShrunkShape shrinkForContacts(const Ring& shape, double tolerance) {
                        "a feature is smaller than the contact tolerance " +
                            std::to_string(tolerance) + " (" + why + ")"};
   };
+  // Nearly parallel edges (e.g. a vertex off by 1e-320) put the shrunk vertex at infinity:
+  // exact predicates must not see that.
+  for (Vec2 v : r.ring)
+    if (!std::isfinite(v.x) || !std::isfinite(v.y))
+      return tooSmall("the shape shrunk by it degenerates");
   if (findSelfIntersection(r.ring)) return tooSmall("the shape shrunk by it is not simple");
   if (!isCounterClockwise(r.ring)) return tooSmall("the shape shrunk by it turns over");
   for (Vec2 v : r.ring)

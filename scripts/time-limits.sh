@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Measures how far `mms plan` overruns --time-limit on scenes whose single manifolds are heavy
+# (random scenes with 1000 and 3000 obstacles, one and two robots) and on unsolvable bundled
+# scenes (which always run to the limit). Prints one line per run and the worst ratio of the
+# planner's own time (the stats file's "seconds") and of the whole command (loading included)
+# to the limit.  Usage: scripts/time-limits.sh [LIMIT ...]   (default: 1 3)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+limits=("$@")
+[ ${#limits[@]} -gt 0 ] || limits=(1 3)
+mms=build/mms
+[ -x "$mms" ] || { echo "build first: bash scripts/test.sh" >&2; exit 2; }
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+scenes=(scenarios/one-robot/sealed-ring.json)
+for spec in 1:1000:1 2:3000:1 3:1000:2 4:3000:2; do
+  IFS=: read -r seed n robots <<<"$spec"
+  f="$dir/random-$seed-$n-$robots.json"
+  "$mms" scenario random --seed "$seed" --obstacles "$n" --robots "$robots" -o "$f" >/dev/null
+  scenes+=("$f")
+done
+worst=0 worstWall=0
+for limit in "${limits[@]}"; do
+  for scene in "${scenes[@]}"; do
+    start=$(date +%s.%N)
+    "$mms" plan "$scene" --time-limit "$limit" -o "$dir/p.json" --stats-json "$dir/s.json" -q \
+      >/dev/null || true
+    end=$(date +%s.%N)
+    read -r status seconds < <(python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(d['status'], d['seconds'])" "$dir/s.json")
+    wall=$(python3 -c "print($end - $start)")
+    printf '%-28s limit %5s s: %-9s planner %7.3f s, command %7.3f s\n' "$(basename "$scene")" "$limit" "$status" "$seconds" "$wall"
+    [ "$status" = found ] && continue  # ended early: says nothing about the limit
+    worst=$(python3 -c "print(max($worst, $seconds / $limit))")
+    worstWall=$(python3 -c "print(max($worstWall, $wall / $limit))")
+  done
+done
+printf 'worst overrun: planner %.1f %%, whole command %.1f %% of the limit\n' \
+  "$(python3 -c "print(100 * ($worst - 1))")" "$(python3 -c "print(100 * ($worstWall - 1))")"

@@ -1,0 +1,175 @@
+// Degenerate geometry: obstacles touching each other and the bounds, collinear and overlapping
+// edges, duplicated obstacles (coincident critical angles), a start touching an obstacle, a gap
+// exactly as wide as the robot, hundreds of obstacles. Cells and arcs are checked against the
+// collision checker; planned paths against the continuous path checker.
+//
+// Decision for zero clearance (docs/robustness.md): contacts up to the scene's tolerance count
+// as touching, so a gap exactly the robot's width is passable. A translating robot passes it
+// (its free space is exact); for a rigid robot the passage is a set of angles of measure ~0 that
+// sampling finds only by luck: it may report "no path", never an uncertified one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "Support.h"
+#include "check/PathChecker.h"
+#include "geometry/CollisionChecker.h"
+#include "geometry/PolygonOps.h"
+#include "manifolds/Line.h"
+#include "manifolds/Slice.h"
+#include "planner/MmsPlanner.h"
+#include "scene/RandomScene.h"
+#include "scene/SceneIO.h"
+
+namespace mms {
+namespace {
+
+Ring rect(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+// Validated like a file: the loader must accept every scene here.
+Scene load(const Scene& s) { return parseScene(sceneToJson(s), s.name); }
+
+// Rectangles sharing edges (collinear), one overlapping two others, some flush with the
+// bounds, one duplicated, two sharing only a corner; a wall with a gap of exactly `gap`.
+Scene touchingScene(double gap, Motion motion) {
+  Scene s;
+  s.name = "touching";
+  s.bounds = {0, 0, 10, 10};
+  s.obstacles = {rect(0, 0, 3, 2),
+                 rect(3, 0, 6, 2),
+                 rect(5, 0, 8, 1),
+                 rect(8, 1, 10, 2),
+                 rect(8, 1, 10, 2),
+                 rect(0, 4, 5 - gap / 2, 5),
+                 rect(5 + gap / 2, 4, 10, 5),
+                 rect(1, 7, 2, 8),
+                 rect(2, 8, 3, 9)};
+  Robot r;
+  r.name = "square";
+  r.motion = motion;
+  r.shape = rect(-0.5, -0.5, 0.5, 0.5);
+  r.start = {5, 2.5, 0};  // touches the top of rect(3, 0, 6, 2) (y = 2) exactly
+  r.goal = {5, 9.5, 0};     // touches the upper bound
+  s.robots = {r};
+  return load(s);
+}
+
+bool trueShapeOverlaps(const Scene& s, const Pose& pose) {
+  Ring placed;
+  transformRing(s.robots[0].shape, pose, placed);
+  const Box box = boundingBox(placed);
+  if (!s.bounds.contains(box)) return true;
+  for (const Ring& o : s.obstacles)
+    if (ringsIntersect(placed, box, o, boundingBox(o))) return true;
+  return false;
+}
+
+// Random points: in a cell means free for the checker; outside every cell means the true shape
+// touches or overlaps something. Returns how many points fell in cells.
+size_t checkSlice(const Scene& s, double theta, int points) {
+  const CollisionChecker checker(s);
+  const SliceWorld world(s, 0);
+  const Slice slice(world, exact::rationalAngleNear(theta, 30));
+  Random rng(7);
+  size_t in = 0;
+  for (int i = 0; i < points; ++i) {
+    const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax),
+                 rng.uniform(s.bounds.ymin, s.bounds.ymax)};
+    const Pose q{p.x, p.y, slice.theta()};
+    if (slice.locate(p) >= 0) {
+      ++in;
+      EXPECT_TRUE(checker.robotFree(0, q)) << p.x << ", " << p.y;
+    } else {
+      EXPECT_TRUE(trueShapeOverlaps(s, q)) << p.x << ", " << p.y;
+    }
+  }
+  return in;
+}
+
+TEST(Degenerate, SlicesAmongTouchingCollinearAndDuplicatedObstaclesMatchTheChecker) {
+  const Scene s = touchingScene(1.0, Motion::Rigid);
+  for (double theta : {0.0, M_PI / 2, 0.3, -2.0}) EXPECT_GT(checkSlice(s, theta, 4000), 100u);
+}
+
+TEST(Degenerate, LinesWithCoincidentCriticalAnglesMatchTheChecker) {
+  // Duplicated obstacles and obstacles sharing corners give the same critical angle twice.
+  const Scene s = touchingScene(1.0, Motion::Rigid);
+  const CollisionChecker checker(s);
+  const LineWorld world(s, 0);
+  Random rng(3);
+  size_t samples = 0;
+  for (const Vec2 p : {Vec2{9, 3}, Vec2{2.5, 8.5}, Vec2{5, 3}, Vec2{5, 4.5}, Vec2{1.5, 3}}) {
+    const Line line(
+        world, [&](const Pose& q) { return checker.robotFree(0, q); }, p);
+    const std::vector<double> critical = criticalAngles(world, p);
+    for (int i = 0; i < 2000; ++i) {
+      const double t = rng.uniform(-M_PI, M_PI);
+      bool nearCritical = false;
+      for (double c : critical) nearCritical |= std::fabs(std::remainder(t - c, 2 * M_PI)) < 1e-9;
+      if (nearCritical) continue;
+      ++samples;
+      const Pose q{p.x, p.y, t};
+      if (line.arcContaining(t) >= 0) {
+        EXPECT_TRUE(checker.robotFree(0, q)) << p.x << ", " << p.y << " at " << t;
+      } else if (checker.robotFree(0, q)) {
+        EXPECT_TRUE(trueShapeOverlaps(s, q)) << p.x << ", " << p.y << " at " << t;
+      }
+    }
+  }
+  EXPECT_GT(samples, 9000u);
+}
+
+MmsResult plan(const Scene& s, double seconds) {
+  MmsPlanner planner(s, 0, {});
+  return planner.solve(s.robots[0].start, s.robots[0].goal, Termination(seconds));
+}
+
+TEST(Degenerate, TranslatingRobotPassesAGapExactlyItsWidthTouchingBothSides) {
+  const Scene s = touchingScene(1.0, Motion::Translate);
+  const MmsResult r = plan(s, test::planSeconds(10));
+  ASSERT_EQ(r.status, MmsResult::Status::Found);
+  const CollisionChecker checker(s);
+  Path path;
+  path.waypoints = r.waypoints;
+  const PathCheckResult c = checkPath(s, checker, path);
+  EXPECT_TRUE(c.ok) << c.reason;
+  EXPECT_LT(c.minClearance, s.tolerance());  // it touches: zero clearance, certified
+}
+
+TEST(Degenerate, GapNarrowerThanTheRobotByTenTolerancesHasNoPath) {
+  const Scene probe = touchingScene(1.0, Motion::Translate);
+  const Scene s = touchingScene(1.0 - 10 * probe.tolerance(), Motion::Translate);
+  EXPECT_EQ(plan(s, test::planSeconds(10)).status, MmsResult::Status::NotFound);
+}
+
+TEST(Degenerate, RigidRobotAtAnExactFitGapNeverReturnsAnUncertifiedPath) {
+  const Scene s = touchingScene(1.0, Motion::Rigid);
+  const MmsResult r = plan(s, test::planSeconds(2));
+  if (r.status == MmsResult::Status::Found) {
+    EXPECT_TRUE(r.certificate.ok);
+    const CollisionChecker checker(s);
+    Path path;
+    path.waypoints = r.waypoints;
+    EXPECT_TRUE(checkPath(s, checker, path).ok);
+  } else {
+    EXPECT_EQ(r.status, MmsResult::Status::NotFound);
+  }
+}
+
+TEST(Degenerate, HundredsOfObstacles) {
+  const Scene s = load(randomScene({11, 1, 500}));
+  ASSERT_EQ(s.obstacles.size(), 500u);
+  checkSlice(s, 0.7, test::kSanitized ? 300 : 2000);
+  const MmsResult r = plan(s, test::planSeconds(3));
+  if (r.status == MmsResult::Status::Found) {
+    const CollisionChecker checker(s);
+    Path path;
+    path.waypoints = r.waypoints;
+    EXPECT_TRUE(checkPath(s, checker, path).ok);
+  }
+}
+
+}  // namespace
+}  // namespace mms
