@@ -51,7 +51,7 @@ Scene touchingScene(double gap, Motion motion) {
   r.motion = motion;
   r.shape = rect(-0.5, -0.5, 0.5, 0.5);
   r.start = {5, 2.5, 0};  // touches the top of rect(3, 0, 6, 2) (y = 2) exactly
-  r.goal = {5, 9.5, 0};     // touches the upper bound
+  r.goal = {5, 9.5, 0};   // touches the upper bound
   s.robots = {r};
   return load(s);
 }
