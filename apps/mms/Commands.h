@@ -37,6 +37,7 @@ struct PlanArgs {
   std::string scene, output, svg;
   uint64_t seed = 1;
   double timeLimit = 60;
+  double memoryMb = 0;                          // 0: no limit
   size_t nTheta = 0, nLines = 0, nFixings = 0;  // 0: the planner's default
   double expandShare = -1;                      // < 0: the planner's default
   bool quiet = false;
@@ -87,6 +88,7 @@ struct AssembleArgs {
   std::string scene, output, svg;
   uint64_t seed = 1;
   double timeLimit = 60;
+  double memoryMb = 0;  // 0: no limit
   bool noPairs = false, quiet = false;
 };
 int assemble(const AssembleArgs& a);

@@ -10,6 +10,20 @@
 #include "scene/Errors.h"
 #include "util/CommandBoundary.h"
 #include "util/Interrupt.h"
+#include "util/MemoryLimit.h"
+
+namespace {
+
+// --memory-limit: 0 (none) or a cap large enough for the program itself to start.
+const CLI::Validator memoryLimitMb(
+    [](std::string& v) -> std::string {
+      double mb = -1;
+      if (!CLI::detail::lexical_cast(v, mb)) return "not a number: " + v;
+      return mb == 0 || (mb >= 64 && mb <= 1e7) ? "" : "must be 0 (no limit) or 64 to 1e7 MB";
+    },
+    "0|64..1e7");
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace mms::cli;
@@ -66,6 +80,11 @@ int main(int argc, char** argv) {
   planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e6));
+  planCmd
+      ->add_option("--memory-limit", pa.memoryMb,
+                   "MB of address space; beyond it the run ends with 'out of memory' (0: none)")
+      ->capture_default_str()
+      ->check(memoryLimitMb);
   planCmd
       ->add_option(
           "--n-theta", pa.nTheta,
@@ -180,6 +199,11 @@ int main(int argc, char** argv) {
   assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e7));
+  assembleCmd
+      ->add_option("--memory-limit", aa.memoryMb,
+                   "MB of address space; beyond it the run ends with 'out of memory' (0: none)")
+      ->capture_default_str()
+      ->check(memoryLimitMb);
   assembleCmd->add_flag("--no-pairs", aa.noPairs,
                         "Two hands only: move one part at a time (exact for translating parts)");
   assembleCmd->add_flag("-q,--quiet", aa.quiet, "No progress messages on stderr");
@@ -208,13 +232,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.01, 1e6));
   benchCmd->add_option("--memory-limit", ba.memoryMb, "MB of address space per run (0: none)")
       ->capture_default_str()
-      ->check(CLI::Validator(
-          [](std::string& v) -> std::string {
-            double mb = -1;
-            if (!CLI::detail::lexical_cast(v, mb)) return "not a number: " + v;
-            return mb == 0 || (mb >= 64 && mb <= 1e7) ? "" : "must be 0 (no limit) or 64 to 1e7 MB";
-          },
-          "0|64..1e7"));
+      ->check(memoryLimitMb);
   benchCmd->add_option(
       "--sweep-pacman", ba.sweepPacman,
       "Comma-separated Pacman tightness values to add as generated scenes, e.g. 0,0.5,0.9");
@@ -260,6 +278,9 @@ int main(int argc, char** argv) {
         if (*checkCmd) return check(ca);
         if (*renderCmd) return render(ra);
         if (*planCmd || *assembleCmd) mms::sigintFlag();  // from here on, Ctrl-C ends them cleanly
+        if (*planCmd || *assembleCmd)
+          if (!mms::limitMemory(*planCmd ? pa.memoryMb : aa.memoryMb))
+            throw mms::InputError("--memory-limit: the system refused the limit");
         if (*planCmd) return plan(pa);
         if (*scenarioCmd) return scenario(sa);
         if (*assembleCmd) return assemble(aa);

@@ -32,7 +32,7 @@ int runAtBoundary(const std::function<int()>& command, std::ostream& err) {
     err << "mms: interrupted (Ctrl-C); no output written\n";
     return kExitInterrupted;
   } catch (const std::bad_alloc&) {
-    err << "mms: out of memory (see --memory-limit)\n";
+    err << "mms: out of memory (see --memory-limit); no output written\n";
     return kExitInternal;
   } catch (const std::exception& e) {
     err << "mms: internal error: " << oneLine(e.what()) << "\n";
