@@ -67,6 +67,30 @@ TEST(Plan, SameSeedSamePathFileDifferentSeedOtherwise) {
   EXPECT_EQ(c.code, 0) << c.out;
 }
 
+// Slices (one robot) and overlays (two robots) are built in parallel batches and added in
+// order: the thread count must not change the roadmap, hence not the path file either.
+TEST(Plan, SamePathFileWhateverTheThreadCount) {
+  TempDir dir;
+  const std::string random = dir.path("random.json");
+  ASSERT_EQ(runMms("scenario random --seed 21 --robots 1 --obstacles 60 -o " + quote(random)).code,
+            0);
+  for (const std::string& scene :
+       {scenario("one-robot/maze.json"), scenario("one-robot/bug-trap.json"), random,
+        scenario("two-robots/pacman-0.5.json"), scenario("two-robots/viking-helmet.json")}) {
+    std::string first;
+    for (const char* threads : {"1", "2", "3"}) {
+      const std::string out = dir.path(std::string("t") + threads + ".json");
+      const Outcome r = runMms("plan " + quote(scene) + " --seed 4 -q --threads " + threads +
+                               " -o " + quote(out));
+      ASSERT_EQ(r.code, 0) << scene << " --threads " << threads << ": " << r.out << r.err;
+      if (first.empty())
+        first = readFile(out);
+      else
+        EXPECT_EQ(readFile(out), first) << scene << " --threads " << threads;
+    }
+  }
+}
+
 TEST(Plan, SealedGoalEndsWithExitOneWithinTheTimeLimit) {
   TempDir dir;
   const auto t0 = std::chrono::steady_clock::now();

@@ -38,6 +38,7 @@ struct PlanArgs {
   uint64_t seed = 1;
   double timeLimit = 60;
   double memoryMb = 0;                          // 0: no limit
+  unsigned threads = 1;                         // slice-building threads; 0: all hardware threads
   size_t nTheta = 0, nLines = 0, nFixings = 0;  // 0: the planner's default
   double expandShare = -1;                      // < 0: the planner's default
   bool quiet = false;
@@ -88,7 +89,7 @@ struct AssembleArgs {
   std::string scene, output, svg;
   uint64_t seed = 1;
   double timeLimit = 60;
-  double memoryMb = 0;  // 0: no limit
+  double memoryMb = 0;   // 0: no limit
   bool noPairs = false, quiet = false;
 };
 int assemble(const AssembleArgs& a);

@@ -11,6 +11,7 @@
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
 #include "util/Interrupt.h"
+#include "util/Parallel.h"
 
 namespace mms::cli {
 
@@ -198,6 +199,7 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
                      " has two robots");
   TwoRobotSettings settings;
   settings.seed = a.seed;
+  settings.threads = a.threads ? a.threads : hardwareThreads();
   if (a.nTheta) settings.nTheta = a.nTheta;
   if (a.nLines) settings.nLines = a.nLines;
   if (a.nFixings) settings.nFixings = a.nFixings;
@@ -273,6 +275,7 @@ int plan(const PlanArgs& a) {
 
   MmsSettings settings;
   settings.seed = a.seed;
+  settings.threads = a.threads ? a.threads : hardwareThreads();
   if (a.nTheta) settings.nTheta = a.nTheta;
   if (a.nLines) settings.nLines = a.nLines;
   MmsPlanner planner(scene, 0, settings);

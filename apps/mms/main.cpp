@@ -81,6 +81,12 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e6));
   planCmd
+      ->add_option("--threads", pa.threads,
+                   "Threads that build slices (0: all cores). Same seed, same path file whatever "
+                   "the number")
+      ->capture_default_str()
+      ->check(CLI::Range(0u, 256u));
+  planCmd
       ->add_option("--memory-limit", pa.memoryMb,
                    "MB of address space; beyond it the run ends with 'out of memory' (0: none)")
       ->capture_default_str()

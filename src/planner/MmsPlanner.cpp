@@ -4,6 +4,7 @@
 
 #include "path/CellRoute.h"
 #include "planner/Motion.h"
+#include "util/Parallel.h"
 
 namespace mms {
 
@@ -60,6 +61,31 @@ void MmsPlanner::addSlice(double theta) {
   const Slice base(sliceWorld_, exact::rationalAngleNear(theta, 30), settings_.pointLocation);
   stats_.manifolds.sliceSeconds += watch.seconds();
   subspace().addSlice(base);  // nothing is held: shares the base's cells
+}
+
+// The next `count` angles of the sequence, built settings_.threads at a time and added in
+// order. A slice the limit cut short ends the batch: the ones before it are kept.
+void MmsPlanner::addSlices(size_t count, const std::function<void()>& report) {
+  const size_t batch = std::max(1u, settings_.threads);
+  for (size_t done = 0; done < count;) {
+    checkpoint();  // the limit, between batches
+    const size_t n = std::min(batch, count - done);
+    std::vector<double> thetas(n);
+    for (double& t : thetas) t = angles_.next();
+    std::vector<std::optional<Slice>> built(n);
+    Stopwatch watch;
+    const auto errors = parallelFor(n, settings_.threads, [&](size_t i) {
+      built[i].emplace(sliceWorld_, exact::rationalAngleNear(thetas[i], 30),
+                       settings_.pointLocation);
+    });
+    stats_.manifolds.sliceSeconds += watch.seconds();
+    for (size_t i = 0; i < n; ++i) {
+      if (errors[i]) std::rethrow_exception(errors[i]);
+      subspace().addSlice(*built[i]);  // nothing is held: shares the base's cells
+      report();
+    }
+    done += n;
+  }
 }
 
 MmsResult MmsPlanner::finish(MmsResult result, MmsResult::Status status, double seconds) {
@@ -142,7 +168,8 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
   while (true) {
     ++stats_.rounds;
     try {
-      while (slices().size() < targetSlices && !stop()) addSlice(angles_.next()), report(false);
+      if (slices().size() < targetSlices && !stop())
+        addSlices(targetSlices - slices().size(), [&] { report(false); });
       while (lines().size() < targetLines && !stop()) sub.addLine(nextLinePoint()), report(false);
     } catch (const Stopped&) {
       // The limit struck inside a manifold: it is dropped, the search runs on the rest.

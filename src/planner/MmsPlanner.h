@@ -28,6 +28,9 @@ struct MmsSettings {
   double freeLineShare = 0.5;  // share of line points drawn inside slice FSCs, the rest uniform
   size_t shortcutAttempts = 200;
   PointLocation pointLocation = PointLocation::Auto;
+  /// Threads that build slices (each round's slices in batches of this many). The result does
+  /// not depend on it: slices are added to the roadmap in angle order.
+  unsigned threads = 1;
 };
 
 /// Angles n at a time: n evenly spaced with a random shift, then the midpoints between them,
@@ -79,6 +82,7 @@ class MmsPlanner {
                         const std::function<void(const MmsStats&)>& progress);
   Vec2 nextLinePoint();
   void addSlice(double theta);
+  void addSlices(size_t count, const std::function<void()>& report);
   MmsResult::Status solveTranslation(const Pose& start, const Pose& goal, MmsResult& result);
   MmsResult finish(MmsResult result, MmsResult::Status status, double seconds);
 

@@ -48,10 +48,17 @@ void Subspace::connect(size_t k, size_t l) {
   if (f >= 0) graph_.addEdge(sliceNodes_[k][f], lineNodes_[l][a]);
 }
 
+Slice Subspace::overlay(const Slice& base) const { return Slice(base, heldRings_); }
+
 size_t Subspace::addSlice(const Slice& base) {
   Stopwatch watch;
-  slices_.emplace_back(base, heldRings_);
+  Slice slice = overlay(base);
   stats_.sliceSeconds += watch.seconds();
+  return addOverlay(std::move(slice));
+}
+
+size_t Subspace::addOverlay(Slice slice) {
+  slices_.push_back(std::move(slice));
   const size_t k = slices_.size() - 1;
   std::vector<size_t> nodes;
   for (size_t f = 0; f < slices_[k].fscCount(); ++f)

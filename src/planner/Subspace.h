@@ -39,9 +39,13 @@ class Subspace {
   const std::vector<Slice>& slices() const { return slices_; }
   const std::vector<Line>& lines() const { return lines_; }
 
-  /// Adds the slice `base` (the obstacles alone) with the held robots subtracted, connecting it
-  /// to the lines already here. Returns its index.
-  size_t addSlice(const Slice& base);
+  /// The slice `base` (the obstacles alone) with the held robots subtracted. Builds only, so
+  /// several threads may build overlays of one subspace at once.
+  Slice overlay(const Slice& base) const;
+  /// Adds a slice built by overlay(), connecting it to the lines already here. Returns its
+  /// index.
+  size_t addOverlay(Slice slice);
+  size_t addSlice(const Slice& base);  // overlay(base), timed, then added
   /// Adds a line at p, connecting it to the slices already here. Returns its index.
   size_t addLine(Vec2 p);
 

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "planner/Motion.h"
+#include "util/Parallel.h"
 
 namespace mms {
 
@@ -46,13 +48,41 @@ void TwoRobotPlanner::addAngles(size_t robot, size_t count, const Termination& s
     base_[robot].emplace_back(*worlds_[robot],
                               exact::rationalAngleNear(angles_[robot]->next(), 30));
     stats_.baseSliceSeconds += watch.seconds();
+    std::vector<Subspace*> moving;
     for (auto& sub : subspaces_)
-      if (sub->moving() == robot && !stop()) sub->addSlice(base_[robot].back());
+      if (sub->moving() == robot) moving.push_back(sub.get());
+    addOverlays(moving.size(), [&](size_t i) -> std::pair<Subspace*, const Slice*> {
+      return {moving[i], &base_[robot].back()};
+    });
   }
   collectCells(firstNode);
 }
 
 TwoRobotPlanner::~TwoRobotPlanner() = default;
+
+// Overlays (a base slice minus the held robot) for `count` (subspace, base) pairs, built
+// settings_.threads at a time and added in index order, so the roadmap does not depend on the
+// thread count. A build the time limit cut short ends it (Stopped): the ones before it stay.
+void TwoRobotPlanner::addOverlays(
+    size_t count, const std::function<std::pair<Subspace*, const Slice*>(size_t)>& item) {
+  const size_t batch = std::max<size_t>(1, 4 * size_t(settings_.threads));
+  for (size_t done = 0; done < count;) {
+    checkpoint();
+    const size_t n = std::min(batch, count - done);
+    std::vector<std::optional<Slice>> built(n);
+    Stopwatch watch;
+    const auto errors = parallelFor(n, settings_.threads, [&](size_t i) {
+      const auto [sub, base] = item(done + i);
+      built[i].emplace(sub->overlay(*base));
+    });
+    stats_.manifolds.sliceSeconds += watch.seconds();
+    for (size_t i = 0; i < n; ++i) {
+      if (errors[i]) std::rethrow_exception(errors[i]);
+      item(done + i).first->addOverlay(std::move(*built[i]));
+    }
+    done += n;
+  }
+}
 
 Vec2 TwoRobotPlanner::linePoint(size_t robot) {
   const Box& b = scene_.bounds;
@@ -80,10 +110,9 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
   ++stats_.subspaces;
   ++stats_.fixings[held.robot];
   Subspace& sub = *subspaces_.back();
-  for (const Slice& base : base_[moving]) {
-    if (stop()) break;
-    sub.addSlice(base);
-  }
+  addOverlays(base_[moving].size(), [&](size_t i) -> std::pair<Subspace*, const Slice*> {
+    return {&sub, &base_[moving][i]};
+  });
   if (!translates_[moving]) {
     const Robot& r = scene_.robots[moving];
     sub.addLine({r.start.x, r.start.y});  // line 0

@@ -52,6 +52,8 @@ struct TwoRobotSettings {
   // Give up after this many rounds (0: only the time limit stops it). A budget in rounds,
   // unlike one in seconds, gives the same answer for the same seed on any machine.
   size_t maxRounds = 0;
+  // Threads that build overlays (a subspace's slices); the result does not depend on it.
+  unsigned threads = 1;
 };
 
 struct TwoRobotStats {
@@ -92,6 +94,8 @@ class TwoRobotPlanner {
   TwoRobotResult solveRounds(const Termination& stop,
                              const std::function<void(const TwoRobotStats&)>& progress);
   void buildBaseSlices(const Termination& stop);
+  void addOverlays(size_t count,
+                   const std::function<std::pair<Subspace*, const Slice*>(size_t)>& item);
   bool grow(size_t robot, const Termination& stop);
   Fixing fixingAt(size_t robot, const Slice& slice, size_t manifold, Vec2 p, long parent) const;
   bool uniformFixing(size_t robot, Fixing& out);
