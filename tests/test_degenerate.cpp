@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "GeometryReference.h"
 #include "Support.h"
 #include "check/PathChecker.h"
 #include "geometry/CollisionChecker.h"
@@ -29,6 +30,8 @@ Ring rect(double x0, double y0, double x1, double y1) {
 }
 
 // Validated like a file: the loader must accept every scene here.
+using test::trueShapeOverlaps;
+
 Scene load(const Scene& s) { return parseScene(sceneToJson(s), s.name); }
 
 // Rectangles sharing edges (collinear), one overlapping two others, some flush with the
@@ -54,16 +57,6 @@ Scene touchingScene(double gap, Motion motion) {
   r.goal = {5, 9.5, 0};   // touches the upper bound
   s.robots = {r};
   return load(s);
-}
-
-bool trueShapeOverlaps(const Scene& s, const Pose& pose) {
-  Ring placed;
-  transformRing(s.robots[0].shape, pose, placed);
-  const Box box = boundingBox(placed);
-  if (!s.bounds.contains(box)) return true;
-  for (const Ring& o : s.obstacles)
-    if (ringsIntersect(placed, box, o, boundingBox(o))) return true;
-  return false;
 }
 
 // Random points: in a cell means free for the checker; outside every cell means the true shape

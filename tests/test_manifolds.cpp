@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "GeometryReference.h"
 #include "Support.h"
 #include "geometry/CollisionChecker.h"
 #include "geometry/PolygonOps.h"
@@ -31,18 +32,6 @@ Scene randomScene(uint64_t seed) {
   st.robotVertices = 8;
   st.extent = 20;
   return parseScene(sceneToJson(randomPolygonsScene(st)), "generated");
-}
-
-// The robot's own shape (not shrunk by the tolerance) leaves the bounds or shares a point
-// with an obstacle.
-bool trueShapeOverlaps(const Scene& s, const Pose& pose) {
-  Ring placed;
-  transformRing(s.robots[0].shape, pose, placed);
-  const Box box = boundingBox(placed);
-  if (!s.bounds.contains(box)) return true;
-  for (const Ring& o : s.obstacles)
-    if (ringsIntersect(placed, box, o, boundingBox(o))) return true;
-  return false;
 }
 
 }  // namespace
