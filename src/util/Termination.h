@@ -51,8 +51,12 @@ class StopScope {
   const Termination* previous_;
 };
 
-inline void checkpoint() {
-  if (const Termination* stop = StopScope::current(); stop && (*stop)()) throw Stopped{};
+/// `nextStepSeconds`: what the work up to the next checkpoint is expected to cost; a step that
+/// would end past the limit is not begun.
+inline void checkpoint(double nextStepSeconds = 0) {
+  const Termination* stop = StopScope::current();
+  if (stop && ((*stop)() || (nextStepSeconds > 0 && nextStepSeconds > stop->secondsLeft())))
+    throw Stopped{};
 }
 
 /// Seconds since construction, for phase timings.
