@@ -25,6 +25,7 @@
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
 #include "util/Interrupt.h"
+#include "util/MemoryLimit.h"
 
 namespace fs = std::filesystem;
 
@@ -52,11 +53,7 @@ std::string key(const RunRecord& r) {
 pid_t start(const std::string& exe, const Job& job, double memoryMb) {
   const pid_t pid = fork();
   if (pid != 0) return pid;
-  if (memoryMb > 0) {  // 0: no limit (e.g. sanitizer builds, which reserve terabytes)
-    const rlim_t bytes = rlim_t(memoryMb * 1024 * 1024);
-    const struct rlimit lim { bytes, bytes };
-    setrlimit(RLIMIT_AS, &lim);
-  }
+  limitMemory(memoryMb);  // 0: no limit (e.g. sanitizer builds, which reserve terabytes)
   const int null = open("/dev/null", O_WRONLY);
   dup2(null, 1);
   dup2(null, 2);

@@ -283,10 +283,11 @@ int main(int argc, char** argv) {
         if (*validateCmd) return validate(va);
         if (*checkCmd) return check(ca);
         if (*renderCmd) return render(ra);
-        if (*planCmd || *assembleCmd) mms::sigintFlag();  // from here on, Ctrl-C ends them cleanly
-        if (*planCmd || *assembleCmd)
+        if (*planCmd || *assembleCmd) {
+          mms::sigintFlag();  // from here on, Ctrl-C ends them cleanly
           if (!mms::limitMemory(*planCmd ? pa.memoryMb : aa.memoryMb))
             throw mms::InputError("--memory-limit: the system refused the limit");
+        }
         if (*planCmd) return plan(pa);
         if (*scenarioCmd) return scenario(sa);
         if (*assembleCmd) return assemble(aa);
