@@ -51,6 +51,35 @@ TEST(BenchReport, TrimmedMeanMedianAndFailures) {
   EXPECT_EQ(lines(csvReport(runs)), runs.size() + 1);
 }
 
+TEST(BenchReport, SpeedupAgainstTheBestOtherPlanner) {
+  std::vector<RunRecord> runs;
+  auto add = [&](const std::string& scene, const std::string& planner, double seconds,
+                 const std::string& status) {
+    RunRecord r = run(planner, runs.size() + 1, status, seconds);
+    r.scene = scene;
+    r.manifoldsBuilt = 100;
+    r.manifoldsUsed = 10;
+    runs.push_back(r);
+  };
+  for (int i = 0; i < 3; ++i) {
+    add("open", "mms", 0.5, "found");
+    add("open", "rrtconnect", 0.01, "found");
+    add("open", "prm", 2, "found");
+    add("tight", "mms", 2, "found");
+    add("tight", "prm", 60, "not_found");
+    add("tight", "rrtconnect", 60, "not_found");
+  }
+  add("tight", "rrtconnect", 30, "found");  // one of four: the median stays past the limit
+  const std::string md = speedupReport(summarize(runs));
+  // Slower than RRT-Connect on the open scene: a ratio below one, against the best planner.
+  EXPECT_NE(md.find("| open | 0.5 s, 3/3 | rrtconnect: 0.01 s, 3/3 | 0.02× | 10 / 100 |"),
+            std::string::npos)
+      << md;
+  // Nothing else reached its median: a lower bound, and RRT-Connect (one run solved) is best.
+  EXPECT_NE(md.find("| tight | 2 s, 3/3 | rrtconnect: > 60 s, 1/4 | > 30× |"), std::string::npos)
+      << md;
+}
+
 TEST(BenchReport, OmplLogIsReadByOmplBenchmarkStatistics) {
   TempDir dir;
   std::vector<RunRecord> runs;

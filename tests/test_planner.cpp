@@ -54,6 +54,21 @@ INSTANTIATE_TEST_SUITE_P(Bundled, SolvableScene,
                            return n;
                          });
 
+// The search runs once start and goal connect, not at the end of a round: on an open scene the
+// first round is cut short, and the path lies on a few of the manifolds built.
+TEST(Plan, SearchStopsBuildingOnceStartAndGoalConnect) {
+  const Scene s = loadScene(scenario("one-robot/bar-slot.json"));
+  const MmsSettings defaults;
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    const MmsResult r = plan(s, seed, planSeconds(30));
+    ASSERT_EQ(r.status, MmsResult::Status::Found);
+    EXPECT_EQ(r.stats.rounds, 1u);
+    EXPECT_LT(r.stats.manifolds.lines, defaults.nLines / 2) << "seed " << seed;
+    EXPECT_GE(r.stats.pathManifolds, 2u);
+    EXPECT_LE(r.stats.pathManifolds, r.stats.manifolds.slices + r.stats.manifolds.lines);
+  }
+}
+
 TEST(Plan, SameSeedSamePathFileDifferentSeedOtherwise) {
   TempDir dir;
   const std::string scene = quote(scenario("one-robot/bug-trap.json"));

@@ -70,6 +70,23 @@ INSTANTIATE_TEST_SUITE_P(Paper, TwoRobotScene,
                                            TwoRobotCase{"translating/cup.json", 2}),
                          [](const auto& info) { return label(info.param.scene); });
 
+// Both robots' start and goal angles are among their slices, and the search runs once start
+// and goal connect: on the base Pacman scene the first round's fixings are not all drawn.
+TEST(TwoRobots, StartAndGoalAnglesSlicedAndEarlyStop) {
+  const Scene s = loadScene(scenario("two-robots/pacman-0.json"));
+  const TwoRobotSettings defaults;
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    const TwoRobotResult r = plan(s, seed);
+    ASSERT_EQ(r.status, MmsResult::Status::Found);
+    EXPECT_LT(r.stats.subspaces, 2 * (defaults.nFixings + 2)) << "seed " << seed;
+    // Every subspace of a rigid robot has its n_theta (+1 for robot 1) angles, plus its start
+    // angle (start and goal angles coincide in this scene).
+    EXPECT_EQ(r.stats.manifolds.slices, r.stats.fixings[1] * (defaults.nTheta + 1) +
+                                            r.stats.fixings[0] * (defaults.nTheta + 2));
+    EXPECT_LE(r.stats.pathSubspaces, r.stats.subspaces);
+  }
+}
+
 TEST(TwoRobots, SameSeedSamePath) {
   const Scene s = loadScene(scenario("two-robots/pacman-0.5.json"));
   const TwoRobotResult a = plan(s, 3), b = plan(s, 3);

@@ -76,6 +76,11 @@ void fillFromStats(RunRecord& r, const std::string& statsFile) {
       r.rotation = j["path"].value("rotation", 0.0);
     }
     r.graphSize = j.value("graph_nodes", j.value("graph_states", size_t(0)));
+    if (j.contains("manifolds")) {
+      const auto& m = j["manifolds"];
+      r.manifoldsBuilt = m.value("slices", size_t(0)) + m.value("lines", size_t(0));
+      r.manifoldsUsed = m.value("path_manifolds", size_t(0));
+    }
     r.detail = j.value("rejection", "");
   } catch (const std::exception&) {
     r.detail = "unreadable statistics";
@@ -103,6 +108,8 @@ void writeReports(const std::string& dir) {
                    "over solved runs "
                    "without the fastest and the slowest, median over all runs (an unsolved run "
                    "counts as infinite).\n\n";
+  md +=
+      "## MMS against the best other planner\n\n" + speedupReport(summaries) + "\n## All runs\n\n";
   md += markdownReport(fixed, "");
   if (!swept.empty()) {
     md += "\n## Tightness sweep\n\n" + markdownReport(swept, "") +

@@ -31,6 +31,9 @@ void printStats(const MmsStats& s) {
       s.searchSeconds, s.motionSeconds, s.certifySeconds);
   if (s.rejectedPaths)
     std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
+  if (s.pathManifolds)
+    std::printf("  the path uses %zu of the %zu manifolds built\n", s.pathManifolds,
+                s.manifolds.slices + s.manifolds.lines);
 }
 
 struct Query {
@@ -191,6 +194,9 @@ void printTwoRobotStats(const TwoRobotStats& s) {
       s.crossSeconds, s.searchSeconds, s.motionSeconds, s.certifySeconds);
   if (s.rejectedPaths)
     std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
+  if (s.pathManifolds)
+    std::printf("  the path uses %zu of the %zu manifolds built, in %zu of the %zu subspaces\n",
+                s.pathManifolds, m.slices + m.lines, s.pathSubspaces, s.subspaces);
 }
 
 int planTwo(const PlanArgs& a, const Scene& scene) {
@@ -226,10 +232,9 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
                                      {"n_fixings", settings.nFixings},
                                      {"expand_share", settings.expandShare}};
   j["parameters"] = parameters;
-  j["manifolds"] = {{"subspaces", ts.subspaces},
-                    {"slices", ts.manifolds.slices},
-                    {"lines", ts.manifolds.lines},
-                    {"path_cells", ts.pathCells}};
+  j["manifolds"] = {{"subspaces", ts.subspaces},          {"slices", ts.manifolds.slices},
+                    {"lines", ts.manifolds.lines},        {"path_cells", ts.pathCells},
+                    {"path_manifolds", ts.pathManifolds}, {"path_subspaces", ts.pathSubspaces}};
   j["phases"] = {{"base_slices", ts.baseSliceSeconds}, {"overlays", ts.manifolds.sliceSeconds},
                  {"lines", ts.manifolds.lineSeconds},  {"connect", ts.manifolds.connectSeconds},
                  {"cross", ts.crossSeconds},           {"search", ts.searchSeconds},
@@ -308,7 +313,8 @@ int plan(const PlanArgs& a) {
     j["parameters"] = {{"n_theta", settings.nTheta}, {"n_lines", settings.nLines}};
     j["manifolds"] = {{"slices", ms.manifolds.slices},
                       {"lines", ms.manifolds.lines},
-                      {"path_cells", ms.pathCells}};
+                      {"path_cells", ms.pathCells},
+                      {"path_manifolds", ms.pathManifolds}};
     j["phases"] = {{"slices", ms.manifolds.sliceSeconds},
                    {"lines", ms.manifolds.lineSeconds},
                    {"connect", ms.manifolds.connectSeconds},

@@ -29,6 +29,8 @@ nlohmann::json RunRecord::toJson() const {
           {"translation", translation},
           {"rotation", rotation},
           {"graph_size", graphSize},
+          {"manifolds_built", manifoldsBuilt},
+          {"manifolds_used", manifoldsUsed},
           {"detail", detail}};
 }
 
@@ -49,6 +51,8 @@ RunRecord RunRecord::fromJson(const nlohmann::json& j) {
   r.translation = j.value("translation", 0.0);
   r.rotation = j.value("rotation", 0.0);
   r.graphSize = j.value("graph_size", size_t(0));
+  r.manifoldsBuilt = j.value("manifolds_built", size_t(0));
+  r.manifoldsUsed = j.value("manifolds_used", size_t(0));
   r.detail = j.value("detail", "");
   return r;
 }
@@ -102,7 +106,7 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
     s.tightness = g.front()->tightness;
     s.timeLimit = g.front()->timeLimit;
     s.runs = g.size();
-    std::vector<double> solvedTimes, all, lengths, graphs;
+    std::vector<double> solvedTimes, all, lengths, graphs, built, used;
     for (const RunRecord* r : g) {
       s.uncertified += r->status == "uncertified";
       s.peakMemoryMb = std::max(s.peakMemoryMb, r->peakMemoryMb);
@@ -112,6 +116,8 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
         solvedTimes.push_back(r->seconds);
         all.push_back(r->seconds);
         lengths.push_back(r->translation);
+        built.push_back(double(r->manifoldsBuilt));
+        used.push_back(double(r->manifoldsUsed));
       } else {
         all.push_back(std::numeric_limits<double>::infinity());
       }
@@ -133,6 +139,8 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
     s.medianSolved = std::isfinite(s.median);
     s.medianLength = median(lengths);
     s.medianGraph = median(graphs);
+    s.medianBuilt = median(built);
+    s.medianUsed = median(used);
     out.push_back(s);
   }
   return out;
@@ -157,6 +165,50 @@ std::string markdownReport(const std::vector<Summary>& summaries, const std::str
     md << " | " << (s.medianSolved ? fmt("%.3g", s.median) : "> " + fmt("%g", s.timeLimit)) << " | "
        << (s.solved ? fmt("%.3g", s.medianLength) : "–") << " | " << fmt("%.0f", s.medianGraph)
        << " | " << fmt("%.0f", s.peakMemoryMb) << " |\n";
+  }
+  return md.str();
+}
+
+namespace {
+// The better of two summaries of one scene: lower median, then more runs solved.
+bool better(const Summary& a, const Summary& b) {
+  if (a.median != b.median) return a.median < b.median;
+  return a.solved > b.solved;
+}
+std::string medianText(const Summary& s) {
+  return (s.medianSolved ? fmt("%.3g s", s.median) : "> " + fmt("%g s", s.timeLimit)) + ", " +
+         std::to_string(s.solved) + "/" + std::to_string(s.runs);
+}
+std::string label(const Summary& s) {
+  return s.planner + (s.parameters.empty() ? "" : " (" + s.parameters + ")");
+}
+}  // namespace
+
+std::string speedupReport(const std::vector<Summary>& summaries) {
+  std::vector<std::string> scenes;
+  std::map<std::string, const Summary*> mms, other;
+  for (const Summary& s : summaries) {
+    if (!mms.count(s.scene) && !other.count(s.scene)) scenes.push_back(s.scene);
+    auto& best = s.planner == "mms" ? mms : other;
+    if (!best.count(s.scene) || better(s, *best[s.scene])) best[s.scene] = &s;
+  }
+  std::ostringstream md;
+  md << "| scene | MMS median, solved | best other planner by median | speed-up | MMS manifolds "
+        "used / built (median) |\n|---|---|---|---|---|\n";
+  for (const std::string& scene : scenes) {
+    if (!mms.count(scene) || !other.count(scene)) continue;
+    const Summary& m = *mms[scene];
+    const Summary& o = *other[scene];
+    std::string speedup = "–";
+    if (m.medianSolved && o.medianSolved)
+      speedup = fmt("%.3g×", o.median / m.median);
+    else if (m.medianSolved)
+      speedup = "> " + fmt("%.3g×", o.timeLimit / m.median) +
+                (o.solved == 0 ? " (no run of any other planner solved)" : "");
+    md << "| " << scene << " | " << medianText(m) << " | " << label(o) << ": " << medianText(o)
+       << " | " << speedup << " | "
+       << (m.solved ? fmt("%.0f", m.medianUsed) + " / " + fmt("%.0f", m.medianBuilt) : "–")
+       << " |\n";
   }
   return md.str();
 }

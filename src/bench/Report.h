@@ -22,7 +22,9 @@ struct RunRecord {
   double timeLimit = 0, memoryLimitMb = 0;
   double translation = 0, rotation = 0;
   size_t graphSize = 0;  // graph nodes (mms) or planner states (OMPL)
-  std::string detail;    // why a run failed, when known
+  // mms: manifolds (slices + lines) built, and those the solution lies on (an oracle's count)
+  size_t manifoldsBuilt = 0, manifoldsUsed = 0;
+  std::string detail;  // why a run failed, when known
 
   bool solved() const { return status == "found"; }
   nlohmann::json toJson() const;
@@ -39,11 +41,16 @@ struct Summary {
   double median = 0;        // over all runs, an unsolved run counting as infinite
   bool medianSolved = false;
   double medianLength = 0, medianGraph = 0, peakMemoryMb = 0;
+  double medianBuilt = 0, medianUsed = 0;  // manifolds, over solved runs (mms)
 };
 
 std::vector<Summary> summarize(const std::vector<RunRecord>& runs);
 
 std::string markdownReport(const std::vector<Summary>& summaries, const std::string& heading);
+/// Per scene: MMS (the best of its configurations) against the best other planner by median,
+/// with the speed-up (a lower bound where that planner's median is past the time limit) and
+/// how many manifolds MMS built against those its path uses.
+std::string speedupReport(const std::vector<Summary>& summaries);
 std::string csvReport(const std::vector<RunRecord>& runs);
 /// One OMPL benchmark log per scene: scene name -> log text.
 std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunRecord>& runs,

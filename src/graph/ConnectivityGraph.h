@@ -31,6 +31,13 @@ class ConnectivityGraph {
   /// Fewest-cells path from `from` to `to` (inclusive), if they are connected.
   std::optional<std::vector<size_t>> path(size_t from, size_t to) const;
 
+  /// How many distinct manifolds (and subspaces) the cells `path` lie on: what an oracle that
+  /// built only the manifolds of the solution would have built.
+  struct Footprint {
+    size_t manifolds = 0, subspaces = 0;
+  };
+  Footprint footprint(const std::vector<size_t>& path) const;
+
  private:
   using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
   Graph g_;

@@ -63,13 +63,12 @@ void MmsPlanner::addSlice(double theta) {
   subspace().addSlice(base);  // nothing is held: shares the base's cells
 }
 
-// The next `count` angles of the sequence, built settings_.threads at a time and added in
-// order. A slice the limit cut short ends the batch: the ones before it are kept.
-void MmsPlanner::addSlices(size_t count, const std::function<void()>& report) {
-  const size_t batch = std::max(1u, settings_.threads);
-  for (size_t done = 0; done < count;) {
-    checkpoint();  // the limit, between batches
-    const size_t n = std::min(batch, count - done);
+// The slice at the next angle of the sequence. Slices are built settings_.threads at a time
+// and kept until their turn, so the roadmap grows in the same order whatever the thread count.
+void MmsPlanner::addNextSlice() {
+  if (ahead_.empty()) {
+    checkpoint();
+    const size_t n = std::max(1u, settings_.threads);
     std::vector<double> thetas(n);
     for (double& t : thetas) t = angles_.next();
     std::vector<std::optional<Slice>> built(n);
@@ -80,12 +79,12 @@ void MmsPlanner::addSlices(size_t count, const std::function<void()>& report) {
     });
     stats_.manifolds.sliceSeconds += watch.seconds();
     for (size_t i = 0; i < n; ++i) {
-      if (errors[i]) std::rethrow_exception(errors[i]);
-      subspace().addSlice(*built[i]);  // nothing is held: shares the base's cells
-      report();
+      if (errors[i]) std::rethrow_exception(errors[i]);  // Stopped: nothing more is built
+      ahead_.push_back(std::move(*built[i]));
     }
-    done += n;
   }
+  subspace().addSlice(ahead_.front());  // nothing is held: shares the base's cells
+  ahead_.pop_front();
 }
 
 MmsResult MmsPlanner::finish(MmsResult result, MmsResult::Status status, double seconds) {
@@ -118,7 +117,7 @@ MmsResult::Status MmsPlanner::solveTranslation(const Pose& start, const Pose& go
     ++stats_.rejectedPaths;
     return MmsResult::Status::NotFound;
   }
-  stats_.pathCells = 1;
+  stats_.pathCells = stats_.pathManifolds = 1;
   result.waypoints = std::move(w);
   return MmsResult::Status::Found;
 }
@@ -165,12 +164,25 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
     progress(now);
     sinceReport = Stopwatch();
   };
+  // The search runs as soon as start and goal connect (the graph keeps a union-find), not only
+  // at the end of a round: in open scenes a few dozen lines suffice. After a candidate the
+  // checker refused, the round is completed before the next search.
+  bool searchEarly = true;
+  ++stats_.rounds;
   while (true) {
-    ++stats_.rounds;
+    auto connected = [&] { return searchEarly && graph_.connected(size_t(from), size_t(to)); };
     try {
-      if (slices().size() < targetSlices && !stop())
-        addSlices(targetSlices - slices().size(), [&] { report(false); });
-      while (lines().size() < targetLines && !stop()) sub.addLine(nextLinePoint()), report(false);
+      // Slices and lines interleaved in the round's proportion, so that an early connection
+      // finds few of either built (the angle sequence covers the circle evenly at every prefix).
+      while ((slices().size() < targetSlices || lines().size() < targetLines) && !stop() &&
+             !connected()) {
+        const bool slicesBehind = slices().size() * targetLines <= lines().size() * targetSlices;
+        if (slices().size() < targetSlices && (slicesBehind || lines().size() >= targetLines))
+          addNextSlice();
+        else
+          sub.addLine(nextLinePoint());
+        report(false);
+      }
     } catch (const Stopped&) {
       // The limit struck inside a manifold: it is dropped, the search runs on the rest.
     }
@@ -185,6 +197,7 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
       result.certificate = m.certificate;
       if (m.ok) {
         stats_.pathCells = nodes->size();
+        stats_.pathManifolds = graph_.footprint(*nodes).manifolds;
         for (size_t v : *nodes) result.cells.push_back(graph_.node(v));
         result.waypoints = std::move(m.waypoints);
         return finish(result, MmsResult::Status::Found, total.seconds());
@@ -196,6 +209,12 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
       return finish(result,
                     stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound,
                     total.seconds());
+    if (slices().size() < targetSlices || lines().size() < targetLines) {
+      searchEarly = false;  // a refused candidate ended the round early: complete it
+      continue;
+    }
+    searchEarly = true;
+    ++stats_.rounds;
     targetSlices *= 2;
     targetLines *= 2;
   }

@@ -9,6 +9,7 @@
 // Salzman, Hemmer, Raveh, Halperin: "Motion planning via manifold samples", ESA 2011 /
 // Algorithmica 2013; Salzman, Hemmer, Halperin: "On the power of manifold samples in exploring
 // configuration spaces and the dimensionality of narrow passages", Section I-B and appendix.
+#include <deque>
 #include <functional>
 #include <memory>
 #include <string>
@@ -49,6 +50,7 @@ struct MmsStats {
   SubspaceStats manifolds;  // slices, lines, their cells and build times
   size_t rounds = 0, graphNodes = 0, graphEdges = 0;
   size_t pathCells = 0;      // FSCs on the graph path
+  size_t pathManifolds = 0;  // the slices and lines they lie on (of slices + lines built)
   size_t rejectedPaths = 0;  // candidate motions the checker refused
   double searchSeconds = 0, motionSeconds = 0, certifySeconds = 0, totalSeconds = 0;
 };
@@ -82,7 +84,7 @@ class MmsPlanner {
                         const std::function<void(const MmsStats&)>& progress);
   Vec2 nextLinePoint();
   void addSlice(double theta);
-  void addSlices(size_t count, const std::function<void()>& report);
+  void addNextSlice();
   MmsResult::Status solveTranslation(const Pose& start, const Pose& goal, MmsResult& result);
   MmsResult finish(MmsResult result, MmsResult::Status status, double seconds);
 
@@ -95,6 +97,9 @@ class MmsPlanner {
   AngleSequence angles_;
   ConnectivityGraph graph_;
   std::vector<std::unique_ptr<Subspace>> subspaces_;  // exactly one: no robot is held
+  // Slices of the next angles, built settings_.threads at a time ahead of their turn; they
+  // join the roadmap one by one, so early stops do not depend on the thread count.
+  std::deque<Slice> ahead_;
   MmsStats stats_;
 };
 

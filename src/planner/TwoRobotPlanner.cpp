@@ -9,6 +9,11 @@
 
 namespace mms {
 
+// Robot 1 gets one angle more than robot 0: with coprime set sizes n and n + 1, the robots'
+// relative angles (what decides whether one fits into the other, the square into the Pacman's
+// mouth) are spaced 2 pi / (n (n + 1)) instead of 2 pi / n, at no extra cost.
+size_t TwoRobotPlanner::angleCount(size_t robot) const { return settings_.nTheta + robot; }
+
 TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
     : scene_(scene),
       settings_(settings),
@@ -18,7 +23,7 @@ TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
   for (size_t r = 0; r < 2; ++r) {
     translates_[r] = scene_.robots[r].motion == Motion::Translate;
     worlds_[r] = std::make_unique<SliceWorld>(contactScene_, r);
-    angles_[r] = std::make_unique<AngleSequence>(settings_.nTheta, rng_.uniform(0, 2 * M_PI));
+    angles_[r] = std::make_unique<AngleSequence>(angleCount(r), rng_.uniform(0, 2 * M_PI));
   }
 }
 
@@ -34,27 +39,51 @@ void TwoRobotPlanner::buildBaseSlices(const Termination& stop) {
                             exact::rationalAngleNear(scene_.robots[r].start.theta, 30));
       stats_.baseSliceSeconds += watch.seconds();
     } else {
-      addAngles(r, settings_.nTheta, stop);
+      // The robot's start and goal angles first: a slice there contains the whole passage of
+      // positions around the start or goal, where tight problems are often tightest (a part
+      // seated in its slot, the square inside the Pacman's mouth).
+      const Robot& rb = scene_.robots[r];
+      std::vector<double> thetas{rb.start.theta};
+      if (std::fabs(std::remainder(rb.goal.theta - rb.start.theta, 2 * M_PI)) > 1e-9)
+        thetas.push_back(rb.goal.theta);
+      for (size_t i = 0; i < angleCount(r); ++i) thetas.push_back(angles_[r]->next());
+      sequenceAngles_[r] = angleCount(r);
+      addAngles(r, thetas, stop);
     }
   }
 }
 
 // More angles for a rigid robot: the next ones of its evenly spread sequence (the midpoints of
 // the current set), each a new base slice and a new slice in every subspace where it moves.
-void TwoRobotPlanner::addAngles(size_t robot, size_t count, const Termination& stop) {
-  const size_t firstNode = graph_.nodeCount();
-  for (size_t i = 0; i < count && !stop(); ++i) {
+// Base slices are built settings_.threads at a time and appended in angle order; a subspace's
+// slice k is always the overlay of base slice k.
+void TwoRobotPlanner::addAngles(size_t robot, const std::vector<double>& thetas,
+                                const Termination& stop) {
+  const size_t firstNode = graph_.nodeCount(), firstAngle = base_[robot].size();
+  const size_t batch = std::max(1u, settings_.threads), count = thetas.size();
+  for (size_t done = 0; done < count && !stop();) {
+    checkpoint();
+    const size_t n = std::min(batch, count - done);
+    std::vector<std::optional<Slice>> built(n);
     Stopwatch watch;
-    base_[robot].emplace_back(*worlds_[robot],
-                              exact::rationalAngleNear(angles_[robot]->next(), 30));
-    stats_.baseSliceSeconds += watch.seconds();
-    std::vector<Subspace*> moving;
-    for (auto& sub : subspaces_)
-      if (sub->moving() == robot) moving.push_back(sub.get());
-    addOverlays(moving.size(), [&](size_t i) -> std::pair<Subspace*, const Slice*> {
-      return {moving[i], &base_[robot].back()};
+    const auto errors = parallelFor(n, settings_.threads, [&](size_t i) {
+      built[i].emplace(*worlds_[robot], exact::rationalAngleNear(thetas[done + i], 30));
     });
+    stats_.baseSliceSeconds += watch.seconds();
+    for (size_t i = 0; i < n; ++i) {
+      if (errors[i]) std::rethrow_exception(errors[i]);
+      base_[robot].push_back(std::move(*built[i]));
+    }
+    done += n;
   }
+  std::vector<Subspace*> moving;
+  for (auto& sub : subspaces_)
+    if (sub->moving() == robot) moving.push_back(sub.get());
+  if (!moving.empty())
+    addOverlays((base_[robot].size() - firstAngle) * moving.size(),
+                [&](size_t i) -> std::pair<Subspace*, const Slice*> {
+                  return {moving[i % moving.size()], &base_[robot][firstAngle + i / moving.size()]};
+                });
   collectCells(firstNode);
 }
 
@@ -183,12 +212,20 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
 
   size_t target = settings_.nFixings;
   Stopwatch sinceReport;
+  // The search runs as soon as start and goal connect (union-find in the graph), not only at
+  // the end of a round; the robots take turns, so both families grow before that. After a
+  // candidate the checker refused, the round is completed before the next search.
+  bool searchEarly = true;
+  ++stats_.rounds;
   while (true) {
-    ++stats_.rounds;
     try {
-      for (size_t r = 0; r < 2 && !stop(); ++r)
-        while (stats_.fixings[r] < target + 2 && !stop()) {
-          if (!grow(r, stop)) break;
+      std::array<bool, 2> exhausted{false, false};
+      auto wants = [&](size_t r) { return !exhausted[r] && stats_.fixings[r] < target + 2; };
+      while ((wants(0) || wants(1)) && !stop() &&
+             !(searchEarly && graph_.connected(size_t(from), size_t(to))))
+        for (size_t r = 0; r < 2 && !stop(); ++r) {
+          if (!wants(r)) continue;
+          if (!grow(r, stop)) exhausted[r] = true;
           if (progress && sinceReport.seconds() >= 1.0) {
             progress(finish(result, MmsResult::Status::NotFound).stats);
             sinceReport = Stopwatch();
@@ -209,6 +246,9 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
       result.certificate = m.certificate;
       if (m.ok) {
         stats_.pathCells = nodes->size();
+        const auto used = graph_.footprint(*nodes);
+        stats_.pathManifolds = used.manifolds;
+        stats_.pathSubspaces = used.subspaces;
         result.waypoints = std::move(m.waypoints);
         return finish(result, MmsResult::Status::Found);
       }
@@ -218,13 +258,24 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     if (stop())
       return finish(result,
                     stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
+    if (searchEarly && (stats_.fixings[0] < target + 2 || stats_.fixings[1] < target + 2)) {
+      searchEarly = false;  // a refused candidate ended the round early: complete it
+      continue;
+    }
     if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds)
       return finish(result, MmsResult::Status::NotFound);
+    searchEarly = true;
+    ++stats_.rounds;
     // Grow both the fixings and the angle sets: a narrow passage may need the two robots'
     // angles closer than the current sets offer (the Pacman's mouth and the square).
     target *= 2;
     for (size_t r = 0; r < 2; ++r)
-      if (!translates_[r]) addAngles(r, base_[r].size(), stop);
+      if (!translates_[r]) {
+        std::vector<double> thetas(sequenceAngles_[r]);
+        for (double& t : thetas) t = angles_[r]->next();
+        sequenceAngles_[r] *= 2;
+        addAngles(r, thetas, stop);
+      }
   }
 }
 

@@ -27,7 +27,7 @@ namespace mms {
 
 struct TwoRobotSettings {
   uint64_t seed = 1;
-  size_t nTheta = 16;   // n_theta: angles per robot, shared by all its subspaces
+  size_t nTheta = 16;   // n_theta: angles of robot 0 (robot 1: one more), in all its subspaces
   size_t nLines = 128;  // n_l: random lines per subspace
   size_t nFixings = 8;  // n_f: fixings per robot in the first round; doubles every round
   // Every round after the first also doubles n_theta (the new angles are the midpoints), so
@@ -60,6 +60,7 @@ struct TwoRobotStats {
   size_t rounds = 0, subspaces = 0, crossEdges = 0, graphNodes = 0, graphEdges = 0;
   size_t expandedFixings = 0;  // fixings drawn from cells reached from start or goal
   size_t pathCells = 0, rejectedPaths = 0;
+  size_t pathManifolds = 0, pathSubspaces = 0;  // of those built: slices + lines, subspaces
   std::array<size_t, 2> fixings{0, 0};
   SubspaceStats manifolds;  // slices, lines, cells, arcs over all subspaces
   double baseSliceSeconds = 0, crossSeconds = 0, searchSeconds = 0, motionSeconds = 0,
@@ -107,7 +108,8 @@ class TwoRobotPlanner {
   size_t addSubspace(const Fixing& held, const Termination& stop);
   long nodeFor(const Subspace& sub, const Fixing& f, bool knownFree = false) const;
   Vec2 linePoint(size_t robot);
-  void addAngles(size_t robot, size_t count, const Termination& stop);
+  size_t angleCount(size_t robot) const;
+  void addAngles(size_t robot, const std::vector<double>& thetas, const Termination& stop);
   TwoRobotResult finish(TwoRobotResult r, MmsResult::Status status);
 
   Scene scene_;
@@ -118,6 +120,7 @@ class TwoRobotPlanner {
   std::array<bool, 2> translates_;
   std::array<std::unique_ptr<SliceWorld>, 2> worlds_;
   std::array<std::unique_ptr<AngleSequence>, 2> angles_;
+  std::array<size_t, 2> sequenceAngles_{0, 0};  // base slices from angles_ (after start, goal)
   std::array<std::vector<Slice>, 2>
       base_;                     // per robot: its slice at each of its angles, obstacles only
   std::vector<Fixing> fixings_;  // fixings_[i] is held in subspaces_[i]
