@@ -108,6 +108,45 @@ TEST(Slice, PointLocationStrategiesAgree) {
   }
 }
 
+// Auto locates in doubles first; that must give CGAL's exact answer everywhere, most of all
+// at points on, just inside and just outside the cells' edges and vertices, and in cells with
+// holes nested in other cells (the M parts' pockets).
+TEST(Slice, LocationInDoublesAgreesWithExactLocationNearEdges) {
+  std::vector<std::pair<Scene, double>> cases;
+  for (uint64_t seed : {4, 9, 13}) cases.push_back({randomScene(seed), 0.3 * double(seed)});
+  Scene parts = loadScene(scenario("assembly/assembly-2-m-parts.json"));
+  // The other M part held at its start: the slice then has cells inside the pocket.
+  parts.obstacles.push_back(placedRing(parts.robots[1].shape, parts.robots[1].start));
+  cases.push_back({parts, parts.robots[0].start.theta});
+  size_t nearEdge = 0;
+  for (const auto& [scene, theta] : cases) {
+    const SliceWorld world(scene, 0);
+    const auto angle = exact::rationalAngleNear(theta, 30);
+    const Slice exactPl(world, angle, PointLocation::Walk), autoPl(world, angle);
+    ASSERT_GT(exactPl.fscCount(), 0u);
+    std::vector<Vec2> points;
+    Random rng(5);
+    const Box& b = scene.bounds;
+    for (int i = 0; i < 2000; ++i)
+      points.push_back({rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax)});
+    for (size_t c = 0; c < exactPl.fscCount(); ++c)
+      for (const Ring& r : exactPl.cell(c))
+        for (size_t i = 0; i < r.size(); ++i) {
+          const Vec2 a = r[i], e = r[(i + 1) % r.size()] - a;
+          const Vec2 normal = (1 / norm(e)) * Vec2{-e.y, e.x};
+          for (const double t : {0.0, 0.5})
+            for (const double off : {0.0, 1e-13, -1e-13, 1e-10, -1e-10, 1e-8, -1e-8, 1e-4, -1e-4})
+              points.push_back(a + t * e + off * normal);
+        }
+    for (const Vec2& p : points) {
+      const int expected = exactPl.locate(p);
+      ASSERT_EQ(autoPl.locate(p), expected) << "(" << p.x << ", " << p.y << ")";
+      nearEdge += expected >= 0;
+    }
+  }
+  EXPECT_GT(nearEdge, 1000u);  // the probes did land inside cells, not only outside
+}
+
 class LineVsChecker : public ::testing::TestWithParam<uint64_t> {};
 
 TEST_P(LineVsChecker, ArcsMatchSampledAngles) {

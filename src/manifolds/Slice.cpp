@@ -84,6 +84,8 @@ struct Slice::Impl {
   std::unordered_map<const void*, int> faceIndex;
   std::vector<std::vector<Ring>> cells;
   std::vector<double> areas;
+  std::vector<Box> boxes;   // per cell: the bounding box of its outer boundary
+  size_t ringVertices = 0;  // over all cells: what locating in doubles may have to scan
 };
 
 namespace {
@@ -162,6 +164,8 @@ void Slice::index(PointLocation strategy) {
       rings.push_back(ccbRing(*h));
     im.faceIndex[&*f] = int(im.cells.size());
     im.areas.push_back(ringsArea(rings));
+    im.boxes.push_back(boundingBox(rings.front()));
+    for (const Ring& r : rings) im.ringVertices += r.size();
     im.cells.push_back(std::move(rings));
   }
   switch (strategy) {
@@ -249,8 +253,62 @@ size_t Slice::fscCount() const { return impl_->cells.size(); }
 const std::vector<Ring>& Slice::cell(size_t i) const { return impl_->cells[i]; }
 double Slice::area(size_t i) const { return impl_->areas[i]; }
 
+namespace {
+
+// Whether p is inside ring r (crossing number), or nullopt when p lies within `margin` of one
+// of its edges. Away from every edge by more than the rounding of the rings' coordinates (the
+// exact vertices converted to doubles), the answer is the exact one.
+std::optional<bool> insideRing(const Ring& r, Vec2 p, double margin) {
+  bool inside = false;
+  const double margin2 = margin * margin;
+  for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
+    const Vec2 a = r[j], b = r[i];
+    const Vec2 ab = b - a, ap = p - a;
+    const double len2 = dot(ab, ab);
+    const double t = len2 > 0 ? std::clamp(dot(ap, ab) / len2, 0.0, 1.0) : 0.0;
+    const Vec2 d = ap - t * ab;
+    if (dot(d, d) <= margin2) return std::nullopt;
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * ab.x / ab.y) inside = !inside;
+  }
+  return inside;
+}
+
+}  // namespace
+
+// Point location in doubles over the cells whose boxes hold p: planners ask millions of these
+// (line points, fixings, cross tests), and CGAL's exact walk costs microseconds each. Gives up
+// (nullopt) near an edge, or on large slices (a scan is linear; the exact locators are not).
+std::optional<int> Slice::locateInDoubles(Vec2 p) const {
+  constexpr size_t kMaxVertices = 384;
+  const Impl& im = *impl_;
+  if (im.ringVertices > kMaxVertices) return std::nullopt;
+  const double margin = 1e-9 * (1 + std::fabs(p.x) + std::fabs(p.y));
+  int found = -1;
+  for (size_t i = 0; i < im.cells.size(); ++i) {
+    if (!im.boxes[i].contains(p)) continue;
+    const std::vector<Ring>& rings = im.cells[i];
+    bool in = false;
+    for (size_t k = 0; k < rings.size(); ++k) {
+      const auto inside = insideRing(rings[k], p, margin);
+      if (!inside) return std::nullopt;
+      if (k == 0 && !*inside) break;  // outside the outer boundary
+      if (k == 0) in = true;
+      if (k > 0 && *inside) {
+        in = false;  // in a hole
+        break;
+      }
+    }
+    if (!in) continue;
+    if (found >= 0) return std::nullopt;  // two cells claim p: cannot be, ask CGAL
+    found = int(i);
+  }
+  return found;
+}
+
 int Slice::locate(Vec2 p) const {
   if (impl_->cells.empty()) return -1;
+  if (impl_->autoUpgrade)
+    if (const auto fast = locateInDoubles(p)) return *fast;
   const Point q = exact::toExact(p);
   int result = -1;
   auto answer = [&](const auto& obj) {

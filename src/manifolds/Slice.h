@@ -9,6 +9,7 @@
 // Salzman, Hemmer, Halperin: "On the power of manifold samples in exploring configuration
 // spaces and the dimensionality of narrow passages" (the paper in ../shared/paper).
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "geometry/Exact.h"
@@ -17,8 +18,9 @@
 namespace mms {
 
 /// Point-location strategies of CGAL's arrangement package (bench/bench_manifolds.cpp
-/// measures them). Auto walks (no preprocessing) until a slice has answered enough queries
-/// to pay for a trapezoidal map (~5 ms to build, ~10x faster per query on large slices).
+/// measures them). Auto first tries the cells in doubles (decided only away from their edges),
+/// then walks (no preprocessing) until a slice has answered enough queries to pay for a
+/// trapezoidal map (~5 ms to build, ~10x faster per query on large slices).
 enum class PointLocation { Auto, Walk, Trapezoid, Landmarks };
 
 /// What every slice of one robot shares: the obstacles and the robot in exact form.
@@ -53,7 +55,8 @@ class Slice {
   double theta() const { return theta_; }
   size_t fscCount() const;
   /// The FSC whose interior contains p, or -1 (p forbidden or on a cell's boundary).
-  /// Safe to call from several threads.
+  /// Safe to call from several threads. Exact: decided in doubles when p is clearly away from
+  /// every edge of the cells near it, by CGAL's point location otherwise.
   int locate(Vec2 p) const;
   /// FSC i as rings in doubles: its outer boundary (counter-clockwise) then its holes.
   const std::vector<Ring>& cell(size_t i) const;
@@ -63,6 +66,7 @@ class Slice {
  private:
   struct Impl;
   void index(PointLocation strategy);
+  std::optional<int> locateInDoubles(Vec2 p) const;
   std::shared_ptr<Impl> impl_;
   exact::RationalAngle angle_;
   double theta_ = 0;
