@@ -4,7 +4,8 @@
 // position, free arcs of angles) as manifold samples; their free-space cells are the nodes of
 // the connectivity graph, joined where a line's point lies in a slice cell and the slice's
 // angle lies in the line's arc. Anytime: while start and goal are not connected, the numbers
-// of slices and lines double. Multi-query: the roadmap stays for further queries.
+// of slices and lines double; within a round they are interleaved, and the search runs as soon
+// as start and goal connect. Multi-query: the roadmap stays for further queries.
 //
 // Salzman, Hemmer, Raveh, Halperin: "Motion planning via manifold samples", ESA 2011 /
 // Algorithmica 2013; Salzman, Hemmer, Halperin: "On the power of manifold samples in exploring

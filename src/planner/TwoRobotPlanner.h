@@ -12,8 +12,9 @@
 // b-slice containing b's position are joined in the graph. The obstacles' Minkowski sums are
 // computed once per angle; a subspace's slice only subtracts the held robot's sum (overlay).
 // Start and goal enter as fixings plus lines at the moving robot's start and goal positions in
-// every subspace, so they connect although their angles are not in Theta. A robot that only
-// translates has a single angle and needs no lines: its slices are its exact free space.
+// every subspace; each rigid robot's angle set also starts with its start and goal angles (our
+// addition: tight passages often lie around them). A robot that only translates has a single
+// angle and needs no lines: its slices are its exact free space.
 #include <array>
 #include <functional>
 #include <memory>
