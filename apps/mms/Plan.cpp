@@ -182,11 +182,11 @@ int planOmpl(const PlanArgs& a, const Scene& scene) {
 void printTwoRobotStats(const TwoRobotStats& s) {
   const SubspaceStats& m = s.manifolds;
   std::printf(
-      "  manifolds: %zu subspaces (%zu + %zu fixings), %zu slices (%zu cells), %zu lines (%zu "
-      "arcs); "
-      "graph %zu nodes, %zu edges (%zu between subspaces); %zu rounds\n",
-      s.subspaces, s.fixings[0], s.fixings[1], m.slices, m.sliceCells, m.lines, m.lineArcs,
-      s.graphNodes, s.graphEdges, s.crossEdges, s.rounds);
+      "  manifolds: %zu subspaces (%zu + %zu fixings), %zu slices (%zu at narrow arcs; %zu "
+      "cells), %zu lines (%zu arcs); graph %zu nodes, %zu edges (%zu between subspaces); %zu "
+      "rounds\n",
+      s.subspaces, s.fixings[0], s.fixings[1], m.slices, m.localSlices, m.sliceCells, m.lines,
+      m.lineArcs, s.graphNodes, s.graphEdges, s.crossEdges, s.rounds);
   std::printf(
       "  time: %.3f s total = base slices %.3f + overlays %.3f + lines %.3f + connect %.3f + "
       "cross %.3f + search %.3f + motion %.3f + shortcut/certify %.3f\n",

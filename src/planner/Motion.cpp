@@ -25,7 +25,7 @@ std::optional<std::vector<Config>> graphPathMotion(
         const ConnectivityGraph::Node& line = n.kind == Kind::LineArc ? n : next;
         const ConnectivityGraph::Node& slice = n.kind == Kind::SliceCell ? n : next;
         const Vec2 p = sub.lines()[line.manifold].point();
-        exit = {p.x, p.y, sub.slices()[slice.manifold].theta()};
+        exit = {p.x, p.y, sub.slice(slice.manifold).theta()};
       } else {
         for (const auto& [robot, pose] : subspaces[next.subspace]->held())
           if (robot == m) exit = pose;
@@ -38,7 +38,7 @@ std::optional<std::vector<Config>> graphPathMotion(
                           : arc.unwrap(exit.theta) - arc.unwrap(theta);
       w.push_back(q);
     } else {
-      const Slice& slice = sub.slices()[n.manifold];
+      const Slice& slice = sub.slice(n.manifold);
       const auto route =
           routeInCell(slice.cell(n.cell), [&](Vec2 p) { return slice.locate(p) == int(n.cell); },
                       {q[3 * m], q[3 * m + 1]}, {exit.x, exit.y});

@@ -41,11 +41,32 @@ bool Subspace::free(const Pose& q) const {
   return true;
 }
 
-void Subspace::connect(size_t k, size_t l) {
-  const int a = lines_[l].arcContaining(slices_[k].theta());
+void Subspace::connect(const Slice& slice, const std::vector<size_t>& nodes, size_t l) {
+  const int a = lines_[l].arcContaining(slice.theta());
   if (a < 0) return;
-  const int f = slices_[k].locate(lines_[l].point());
-  if (f >= 0) graph_.addEdge(sliceNodes_[k][f], lineNodes_[l][a]);
+  const int f = slice.locate(lines_[l].point());
+  if (f >= 0) graph_.addEdge(nodes[size_t(f)], lineNodes_[l][size_t(a)]);
+}
+
+std::vector<size_t> Subspace::addCellNodes(const Slice& slice, uint32_t manifold) {
+  std::vector<size_t> nodes;
+  for (size_t f = 0; f < slice.fscCount(); ++f)
+    nodes.push_back(
+        graph_.addNode({ConnectivityGraph::Kind::SliceCell, id_, manifold, uint32_t(f)}));
+  ++stats_.slices;
+  stats_.sliceCells += slice.fscCount();
+  return nodes;
+}
+
+void Subspace::addLocalOverlay(Slice slice) {
+  localSlices_.push_back(std::move(slice));
+  const size_t k = localSlices_.size() - 1;
+  localNodes_.push_back(addCellNodes(localSlices_[k], kLocal | uint32_t(k)));
+  ++stats_.localSlices;
+  Stopwatch watchConnect;
+  if (localSlices_[k].fscCount() > 0)
+    for (size_t l = 0; l < lines_.size(); ++l) connect(localSlices_[k], localNodes_[k], l);
+  stats_.connectSeconds += watchConnect.seconds();
 }
 
 Slice Subspace::overlay(const Slice& base) const { return Slice(base, heldRings_); }
@@ -60,16 +81,10 @@ size_t Subspace::addSlice(const Slice& base) {
 size_t Subspace::addOverlay(Slice slice) {
   slices_.push_back(std::move(slice));
   const size_t k = slices_.size() - 1;
-  std::vector<size_t> nodes;
-  for (size_t f = 0; f < slices_[k].fscCount(); ++f)
-    nodes.push_back(
-        graph_.addNode({ConnectivityGraph::Kind::SliceCell, id_, uint32_t(k), uint32_t(f)}));
-  sliceNodes_.push_back(std::move(nodes));
-  ++stats_.slices;
-  stats_.sliceCells += slices_[k].fscCount();
+  sliceNodes_.push_back(addCellNodes(slices_[k], uint32_t(k)));
   Stopwatch watchConnect;
   if (slices_[k].fscCount() > 0)
-    for (size_t l = 0; l < lines_.size(); ++l) connect(k, l);
+    for (size_t l = 0; l < lines_.size(); ++l) connect(slices_[k], sliceNodes_[k], l);
   stats_.connectSeconds += watchConnect.seconds();
   return k;
 }
@@ -88,8 +103,10 @@ size_t Subspace::addLine(Vec2 p) {
   ++stats_.lines;
   stats_.lineArcs += lines_[l].arcs().size();
   Stopwatch watchConnect;
-  if (!lines_[l].arcs().empty())
-    for (size_t k = 0; k < slices_.size(); ++k) connect(k, l);
+  if (!lines_[l].arcs().empty()) {
+    for (size_t k = 0; k < slices_.size(); ++k) connect(slices_[k], sliceNodes_[k], l);
+    for (size_t k = 0; k < localSlices_.size(); ++k) connect(localSlices_[k], localNodes_[k], l);
+  }
   stats_.connectSeconds += watchConnect.seconds();
   return l;
 }

@@ -15,6 +15,7 @@ namespace mms {
 
 struct SubspaceStats {
   size_t slices = 0, lines = 0, sliceCells = 0, lineArcs = 0;
+  size_t localSlices = 0;  // of the slices: those at angles of one subspace alone
   double sliceSeconds = 0, lineSeconds = 0, connectSeconds = 0;
   LineStats lineStats;
 };
@@ -37,6 +38,14 @@ class Subspace {
   size_t moving() const { return moving_; }
   const std::vector<std::pair<size_t, Pose>>& held() const { return held_; }
   const std::vector<Slice>& slices() const { return slices_; }
+  /// Slices at angles of this subspace alone (not shared with the others), numbered from
+  /// kLocal in graph nodes.
+  const std::vector<Slice>& localSlices() const { return localSlices_; }
+  static constexpr uint32_t kLocal = 1u << 31;
+  /// The slice a graph node's `manifold` names: slices()[m], or localSlices()[m - kLocal].
+  const Slice& slice(uint32_t manifold) const {
+    return manifold & kLocal ? localSlices_[manifold & ~kLocal] : slices_[manifold];
+  }
   const std::vector<Line>& lines() const { return lines_; }
 
   /// The slice `base` (the obstacles alone) with the held robots subtracted. Builds only, so
@@ -46,6 +55,8 @@ class Subspace {
   /// index.
   size_t addOverlay(Slice slice);
   size_t addSlice(const Slice& base);  // overlay(base), timed, then added
+  /// Adds a slice built by overlay() as a local slice, connecting it to the lines here.
+  void addLocalOverlay(Slice slice);
   /// Adds a line at p, connecting it to the slices already here. Returns its index.
   size_t addLine(Vec2 p);
 
@@ -60,7 +71,8 @@ class Subspace {
   bool free(const Pose& q) const;
 
  private:
-  void connect(size_t slice, size_t line);
+  void connect(const Slice& slice, const std::vector<size_t>& nodes, size_t line);
+  std::vector<size_t> addCellNodes(const Slice& slice, uint32_t manifold);
 
   uint32_t id_;
   const CollisionChecker& checker_;
@@ -72,7 +84,8 @@ class Subspace {
   SubspaceStats& stats_;
   std::vector<Slice> slices_;
   std::vector<Line> lines_;
-  std::vector<std::vector<size_t>> sliceNodes_, lineNodes_;  // cell -> graph node
+  std::vector<Slice> localSlices_;
+  std::vector<std::vector<size_t>> sliceNodes_, lineNodes_, localNodes_;  // cell -> graph node
 };
 
 }  // namespace mms

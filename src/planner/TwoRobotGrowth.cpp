@@ -17,6 +17,7 @@ void TwoRobotPlanner::collectCells(size_t firstNode) {
   for (size_t v = firstNode; v < graph_.nodeCount(); ++v) {
     const auto& n = graph_.node(v);
     if (n.kind != ConnectivityGraph::Kind::SliceCell) continue;
+    if (n.manifold & Subspace::kLocal) continue;  // fixings are drawn at the shared angles only
     const Subspace& sub = *subspaces_[n.subspace];
     cells_[sub.moving()].push_back(v);
     cellBoxes_[v] = boundingBox(sub.slices()[n.manifold].cell(n.cell).front());

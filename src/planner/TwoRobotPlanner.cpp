@@ -113,6 +113,32 @@ void TwoRobotPlanner::addOverlays(
   }
 }
 
+// A free arc of a line narrower than the shared angles' spacing and met by none of them is a
+// rotation passage they miss: the obstacles and the held robot let the moving one through only
+// within a hair of a contact angle (the Pacman turned round so the square passes through its
+// mouth). A slice at the arc's middle, local to this subspace, opens it; at most
+// settings_.narrowSlices per subspace. Open scenes have no such arcs and pay nothing.
+void TwoRobotPlanner::sliceNarrowArcs(Subspace& sub) {
+  const size_t moving = sub.moving();
+  const double spacing = 2 * M_PI / double(base_[moving].size());
+  size_t added = 0;
+  for (const Line& line : sub.lines())
+    for (const Arc& a : line.arcs()) {
+      if (added >= settings_.narrowSlices) return;
+      if (a.full() || a.hi - a.lo >= spacing) continue;
+      bool met = false;
+      for (const Slice& s : base_[moving]) met = met || a.contains(s.theta());
+      for (const Slice& s : sub.localSlices()) met = met || a.contains(s.theta());
+      if (met) continue;
+      Stopwatch watch;
+      const Slice base(*worlds_[moving], exact::rationalAngleNear(0.5 * (a.lo + a.hi), 30));
+      Slice local = sub.overlay(base);
+      stats_.manifolds.sliceSeconds += watch.seconds();
+      sub.addLocalOverlay(std::move(local));
+      ++added;
+    }
+}
+
 Vec2 TwoRobotPlanner::linePoint(size_t robot) {
   const Box& b = scene_.bounds;
   auto uniform = [&] { return Vec2{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)}; };
@@ -147,6 +173,7 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
     sub.addLine({r.start.x, r.start.y});  // line 0
     sub.addLine({r.goal.x, r.goal.y});    // line 1
     for (size_t i = 0; i < settings_.nLines && !stop(); ++i) sub.addLine(linePoint(moving));
+    sliceNarrowArcs(sub);
   }
   // Meet subspaces of the other family at the pair of their held poses.
   Stopwatch watch;

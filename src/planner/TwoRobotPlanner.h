@@ -49,6 +49,9 @@ struct TwoRobotSettings {
   // A new subspace is tested for meeting points against at most this many subspaces of the
   // other family: those whose held poses are nearest, plus a random sample of the rest.
   size_t crossNearest = 256, crossRandom = 256;
+  // Slices at the middles of narrow free arcs of a subspace's lines that no shared angle meets
+  // (local to the subspace), at most this many per subspace.
+  size_t narrowSlices = 8;
   size_t shortcutAttempts = 300;
   // Give up after this many rounds (0: only the time limit stops it). A budget in rounds,
   // unlike one in seconds, gives the same answer for the same seed on any machine.
@@ -109,6 +112,7 @@ class TwoRobotPlanner {
   size_t addSubspace(const Fixing& held, const Termination& stop);
   long nodeFor(const Subspace& sub, const Fixing& f, bool knownFree = false) const;
   Vec2 linePoint(size_t robot);
+  void sliceNarrowArcs(Subspace& sub);
   size_t angleCount(size_t robot) const;
   void addAngles(size_t robot, const std::vector<double>& thetas, const Termination& stop);
   TwoRobotResult finish(TwoRobotResult r, MmsResult::Status status);
