@@ -67,21 +67,11 @@ void MmsPlanner::addSlice(double theta) {
 // and kept until their turn, so the roadmap grows in the same order whatever the thread count.
 void MmsPlanner::addNextSlice() {
   if (ahead_.empty()) {
-    checkpoint();
-    const size_t n = std::max(1u, settings_.threads);
-    std::vector<double> thetas(n);
+    std::vector<double> thetas(std::max(1u, settings_.threads));
     for (double& t : thetas) t = angles_.next();
-    std::vector<std::optional<Slice>> built(n);
-    Stopwatch watch;
-    const auto errors = parallelFor(n, settings_.threads, [&](size_t i) {
-      built[i].emplace(sliceWorld_, exact::rationalAngleNear(thetas[i], 30),
-                       settings_.pointLocation);
-    });
-    stats_.manifolds.sliceSeconds += watch.seconds();
-    for (size_t i = 0; i < n; ++i) {
-      if (errors[i]) std::rethrow_exception(errors[i]);  // Stopped: nothing more is built
-      ahead_.push_back(std::move(*built[i]));
-    }
+    stats_.manifolds.sliceSeconds +=
+        buildSlices(sliceWorld_, thetas, settings_.threads, settings_.pointLocation,
+                    [&](Slice&& s) { ahead_.push_back(std::move(s)); });
   }
   subspace().addSlice(ahead_.front());  // nothing is held: shares the base's cells
   ahead_.pop_front();

@@ -1,5 +1,6 @@
 #include "planner/Subspace.h"
 
+#include "util/Parallel.h"
 #include "util/Termination.h"
 
 namespace mms {
@@ -12,6 +13,28 @@ std::vector<Ring> placedRings(const Scene& scene,
   return out;
 }
 }  // namespace
+
+double buildSlices(const SliceWorld& world, const std::vector<double>& thetas, unsigned threads,
+                   PointLocation strategy, const std::function<void(Slice&&)>& add) {
+  const size_t batch = std::max(1u, threads);
+  double seconds = 0;
+  for (size_t done = 0; done < thetas.size();) {
+    checkpoint();  // the limit, between batches
+    const size_t n = std::min(batch, thetas.size() - done);
+    std::vector<std::optional<Slice>> built(n);
+    Stopwatch watch;
+    const auto errors = parallelFor(n, threads, [&](size_t i) {
+      built[i].emplace(world, exact::rationalAngleNear(thetas[done + i], 30), strategy);
+    });
+    seconds += watch.seconds();
+    for (size_t i = 0; i < n; ++i) {
+      if (errors[i]) std::rethrow_exception(errors[i]);
+      add(std::move(*built[i]));
+    }
+    done += n;
+  }
+  return seconds;
+}
 
 Scene withContactShapes(const Scene& scene, const CollisionChecker& checker) {
   Scene out = scene;
@@ -63,9 +86,13 @@ void Subspace::addLocalOverlay(Slice slice) {
   const size_t k = localSlices_.size() - 1;
   localNodes_.push_back(addCellNodes(localSlices_[k], kLocal | uint32_t(k)));
   ++stats_.localSlices;
+  connectToLines(localSlices_[k], localNodes_[k]);
+}
+
+void Subspace::connectToLines(const Slice& slice, const std::vector<size_t>& nodes) {
   Stopwatch watchConnect;
-  if (localSlices_[k].fscCount() > 0)
-    for (size_t l = 0; l < lines_.size(); ++l) connect(localSlices_[k], localNodes_[k], l);
+  if (slice.fscCount() > 0)
+    for (size_t l = 0; l < lines_.size(); ++l) connect(slice, nodes, l);
   stats_.connectSeconds += watchConnect.seconds();
 }
 
@@ -82,10 +109,7 @@ size_t Subspace::addOverlay(Slice slice) {
   slices_.push_back(std::move(slice));
   const size_t k = slices_.size() - 1;
   sliceNodes_.push_back(addCellNodes(slices_[k], uint32_t(k)));
-  Stopwatch watchConnect;
-  if (slices_[k].fscCount() > 0)
-    for (size_t l = 0; l < lines_.size(); ++l) connect(slices_[k], sliceNodes_[k], l);
-  stats_.connectSeconds += watchConnect.seconds();
+  connectToLines(slices_[k], sliceNodes_[k]);
   return k;
 }
 

@@ -3,6 +3,7 @@
 // approximated by slices (fixed angle) and lines (fixed position) whose free-space cells are
 // nodes of a shared connectivity graph. The one-robot planner uses one subspace; the two-robot
 // planner (recursive MMS, Section II of the paper) one per fixing of either robot.
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -26,6 +27,12 @@ struct SubspaceStats {
 /// keeps half the tolerance of clearance as the checker sees it (it shrinks by the whole), so
 /// motions inside cells stay certifiable.
 Scene withContactShapes(const Scene& scene, const CollisionChecker& checker);
+
+/// Slices of `world` at `thetas`, built `threads` at a time and passed to `add` in the order of
+/// `thetas`, so what is built does not depend on the thread count. A build that throws (Stopped
+/// at the time limit) ends it: the slices before it have been added. Returns the seconds spent.
+double buildSlices(const SliceWorld& world, const std::vector<double>& thetas, unsigned threads,
+                   PointLocation strategy, const std::function<void(Slice&&)>& add);
 
 class Subspace {
  public:
@@ -73,6 +80,7 @@ class Subspace {
  private:
   void connect(const Slice& slice, const std::vector<size_t>& nodes, size_t line);
   std::vector<size_t> addCellNodes(const Slice& slice, uint32_t manifold);
+  void connectToLines(const Slice& slice, const std::vector<size_t>& nodes);
 
   uint32_t id_;
   const CollisionChecker& checker_;

@@ -60,22 +60,10 @@ void TwoRobotPlanner::buildBaseSlices(const Termination& stop) {
 void TwoRobotPlanner::addAngles(size_t robot, const std::vector<double>& thetas,
                                 const Termination& stop) {
   const size_t firstNode = graph_.nodeCount(), firstAngle = base_[robot].size();
-  const size_t batch = std::max(1u, settings_.threads), count = thetas.size();
-  for (size_t done = 0; done < count && !stop();) {
-    checkpoint();
-    const size_t n = std::min(batch, count - done);
-    std::vector<std::optional<Slice>> built(n);
-    Stopwatch watch;
-    const auto errors = parallelFor(n, settings_.threads, [&](size_t i) {
-      built[i].emplace(*worlds_[robot], exact::rationalAngleNear(thetas[done + i], 30));
-    });
-    stats_.baseSliceSeconds += watch.seconds();
-    for (size_t i = 0; i < n; ++i) {
-      if (errors[i]) std::rethrow_exception(errors[i]);
-      base_[robot].push_back(std::move(*built[i]));
-    }
-    done += n;
-  }
+  if (stop()) return;
+  stats_.baseSliceSeconds +=
+      buildSlices(*worlds_[robot], thetas, settings_.threads, PointLocation::Auto,
+                  [&](Slice&& s) { base_[robot].push_back(std::move(s)); });
   std::vector<Subspace*> moving;
   for (auto& sub : subspaces_)
     if (sub->moving() == robot) moving.push_back(sub.get());
