@@ -89,9 +89,23 @@ struct AssembleArgs {
   std::string scene, output, svg;
   uint64_t seed = 1;
   double timeLimit = 60;
-  double memoryMb = 0;   // 0: no limit
+  double memoryMb = 0;  // 0: no limit
   bool noPairs = false, quiet = false;
 };
 int assemble(const AssembleArgs& a);
+
+}  // namespace mms::cli
+
+namespace mms::cli {
+
+struct LabArgs {
+  std::string experiment;  // completeness or passages
+  std::string output = "docs/theory";
+  uint64_t seed = 1;
+  size_t trials = 0;  // 0: the experiment's default
+  unsigned threads = 0;
+  bool quick = false, noPacman = false, quiet = false;
+};
+int lab(const LabArgs& a);
 
 }  // namespace mms::cli

@@ -265,6 +265,28 @@ int main(int argc, char** argv) {
   mergeCmd->add_option("DIRS", mergeDirs, "Benchmark folders")->required();
   mergeCmd->add_option("-o,--output", mergeOut, "Merged folder")->required();
 
+  LabArgs la;
+  auto* labCmd = app.add_subcommand(
+      "lab",
+      "Measure the paper's theory (docs/theory.md): 'completeness' (failure rate of MMS and PRM\n"
+      "against samples in R^2..R^6, Theorem 3.3) or 'passages' (flume vs tunnel, k-clearance,\n"
+      "the Pacman's passage). Writes SVG plots, CSV and a Markdown summary");
+  labCmd->add_option("EXPERIMENT", la.experiment, "completeness or passages")
+      ->required()
+      ->check(CLI::IsMember({"completeness", "passages"}));
+  labCmd->add_option("-o,--output", la.output, "Folder for the report (created if missing)")
+      ->capture_default_str();
+  labCmd->add_option("--seed", la.seed, "Random seed (same seed, same report)")
+      ->capture_default_str();
+  labCmd->add_option("--trials", la.trials, "Trials per setting (0: the experiment's default)")
+      ->check(CLI::Range(0, 1000000));
+  labCmd->add_option("--threads", la.threads, "Threads for trials (0: all cores)")
+      ->capture_default_str()
+      ->check(CLI::Range(0u, 256u));
+  labCmd->add_flag("--quick", la.quick, "Small settings: a smoke run in seconds");
+  labCmd->add_flag("--no-pacman", la.noPacman, "passages: leave out the Pacman proxy");
+  labCmd->add_flag("-q,--quiet", la.quiet, "No progress messages");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -309,6 +331,10 @@ int main(int argc, char** argv) {
           return bench(ba);
         }
         if (*mergeCmd) return benchMerge(mergeDirs, mergeOut);
+        if (*labCmd) {
+          mms::sigintFlag();
+          return lab(la);
+        }
         return 2;  // a subcommand is required, so this is not reached
       },
       std::cerr);

@@ -1,0 +1,139 @@
+#include "lab/Plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace mms::lab {
+
+namespace {
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else
+      out += c;
+  }
+  return out;
+}
+
+std::string tickLabel(double v) {
+  std::ostringstream o;
+  o << std::setprecision(6) << v;
+  return o.str();
+}
+
+// Tick values covering [lo, hi]: powers of ten on a log axis, 1-2-5 steps on a linear one.
+std::vector<double> ticks(double lo, double hi, bool log) {
+  std::vector<double> t;
+  if (log) {
+    for (double e = std::floor(std::log10(lo)); e <= std::ceil(std::log10(hi)); ++e) {
+      double v = std::pow(10.0, e);
+      if (v >= lo * 0.999 && v <= hi * 1.001) t.push_back(v);
+    }
+    return t;
+  }
+  double span = hi - lo, raw = span / 6, mag = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = raw / mag < 2 ? 2 * mag : raw / mag < 5 ? 5 * mag : 10 * mag;
+  if (raw / mag < 1.5) step = mag;
+  for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9 * span; v += step) t.push_back(v);
+  return t;
+}
+
+}  // namespace
+
+const char* seriesColour(size_t i) {
+  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
+                                  "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+  return colours[i % 8];
+}
+
+std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
+  auto usable = [&](double x, double y) {
+    return std::isfinite(x) && std::isfinite(y) && (!spec.logX || x > 0) && (!spec.logY || y > 0);
+  };
+  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+  for (const Series& s : series)
+    for (auto [x, y] : s.points)
+      if (usable(x, y)) {
+        x0 = std::min(x0, x), x1 = std::max(x1, x);
+        y0 = std::min(y0, y), y1 = std::max(y1, y);
+      }
+  if (!(x0 <= x1)) x0 = 1, x1 = 10, y0 = 1, y1 = 10;
+  if (spec.logX)
+    x0 = std::pow(10.0, std::floor(std::log10(x0))), x1 = std::pow(10.0, std::ceil(std::log10(x1)));
+  if (spec.logY)
+    y0 = std::pow(10.0, std::floor(std::log10(y0))), y1 = std::pow(10.0, std::ceil(std::log10(y1)));
+  if (x0 == x1) x0 -= 1, x1 += 1;
+  if (y0 == y1) y0 = spec.logY ? y0 / 10 : y0 - 1, y1 = spec.logY ? y1 * 10 : y1 + 1;
+  if (!spec.logY && y0 > 0 && y0 < 0.3 * y1) y0 = 0;
+
+  const double left = 70, right = 190, top = 36, bottom = 52;
+  const double pw = spec.width - left - right, ph = spec.height - top - bottom;
+  auto fx = [&](double x) {
+    double t = spec.logX ? std::log(x / x0) / std::log(x1 / x0) : (x - x0) / (x1 - x0);
+    return left + t * pw;
+  };
+  auto fy = [&](double y) {
+    double t = spec.logY ? std::log(y / y0) / std::log(y1 / y0) : (y - y0) / (y1 - y0);
+    return top + (1 - t) * ph;
+  };
+
+  std::ostringstream svg;
+  svg << std::fixed << std::setprecision(1);
+  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+      << "width=\"" << spec.width << "\" height=\"" << spec.height << "\" viewBox=\"0 0 "
+      << spec.width << " " << spec.height << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      << "<text x=\"" << spec.width / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">"
+      << escape(spec.title) << "</text>\n";
+  for (double t : ticks(x0, x1, spec.logX)) {
+    svg << "<line x1=\"" << fx(t) << "\" y1=\"" << top << "\" x2=\"" << fx(t) << "\" y2=\""
+        << top + ph << "\" stroke=\"#eee\"/>\n<text x=\"" << fx(t) << "\" y=\"" << top + ph + 16
+        << "\" text-anchor=\"middle\">" << tickLabel(t) << "</text>\n";
+  }
+  for (double t : ticks(y0, y1, spec.logY)) {
+    svg << "<line x1=\"" << left << "\" y1=\"" << fy(t) << "\" x2=\"" << left + pw << "\" y2=\""
+        << fy(t) << "\" stroke=\"#eee\"/>\n<text x=\"" << left - 6 << "\" y=\"" << fy(t) + 4
+        << "\" text-anchor=\"end\">" << tickLabel(t) << "</text>\n";
+  }
+  svg << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
+      << "\" fill=\"none\" stroke=\"#444\"/>\n"
+      << "<text x=\"" << left + pw / 2 << "\" y=\"" << spec.height - 12
+      << "\" text-anchor=\"middle\">" << escape(spec.xLabel) << "</text>\n"
+      << "<text transform=\"translate(16," << top + ph / 2
+      << ") rotate(-90)\" text-anchor=\"middle\">" << escape(spec.yLabel) << "</text>\n";
+  size_t legendRow = 0;
+  for (size_t i = 0; i < series.size(); ++i) {
+    const Series& s = series[i];
+    std::ostringstream pts;
+    pts << std::fixed << std::setprecision(1);
+    for (auto [x, y] : s.points)
+      if (usable(x, y)) pts << fx(x) << "," << fy(y) << " ";
+    svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.6\""
+        << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << " points=\"" << pts.str() << "\"/>\n";
+    if (s.markers)
+      for (auto [x, y] : s.points)
+        if (usable(x, y))
+          svg << "<circle cx=\"" << fx(x) << "\" cy=\"" << fy(y) << "\" r=\"2.6\" fill=\""
+              << s.colour << "\"/>\n";
+    if (s.name.empty()) continue;
+    double ly = top + 8 + 18 * double(legendRow++);
+    svg << "<line x1=\"" << left + pw + 12 << "\" y1=\"" << ly << "\" x2=\"" << left + pw + 34
+        << "\" y2=\"" << ly << "\" stroke=\"" << s.colour << "\" stroke-width=\"2\""
+        << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << "/>\n<text x=\"" << left + pw + 40
+        << "\" y=\"" << ly + 4 << "\">" << escape(s.name) << "</text>\n";
+  }
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+}  // namespace mms::lab
