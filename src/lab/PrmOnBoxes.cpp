@@ -66,6 +66,14 @@ class ExactBoxMotionValidator : public ob::MotionValidator {
   const BoxSpace& space_;
 };
 
+// PRM needs no projection; OMPL's default random projection for d > 2 is left out (its
+// Eigen matrix is freed with a mismatched allocator under AddressSanitizer).
+class UnprojectedSpace : public ob::RealVectorStateSpace {
+ public:
+  using ob::RealVectorStateSpace::RealVectorStateSpace;
+  void registerProjections() override {}
+};
+
 // PRM's milestone insertion and component test are protected; the lab drives them directly.
 class SteppedPrm : public og::PRM {
  public:
@@ -82,7 +90,7 @@ PrmResult solvePrmOnBoxes(const BoxSpace& space, const Point& start, const Point
     throw std::invalid_argument("start or goal is not free");
   auto t0 = std::chrono::steady_clock::now();
   ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-  auto stateSpace = std::make_shared<ob::RealVectorStateSpace>(space.dim());
+  auto stateSpace = std::make_shared<UnprojectedSpace>(space.dim());
   stateSpace->setBounds(0.0, 1.0);
   auto si = std::make_shared<ob::SpaceInformation>(stateSpace);
   si->setStateValidityChecker([&space](const ob::State* s) { return space.isFree(valuesOf(s)); });
