@@ -331,10 +331,8 @@ int main(int argc, char** argv) {
           return bench(ba);
         }
         if (*mergeCmd) return benchMerge(mergeDirs, mergeOut);
-        if (*labCmd) {
-          mms::sigintFlag();
-          return lab(la);
-        }
+        // Ctrl-C keeps its default (the lab writes its files only at the end, atomically).
+        if (*labCmd) return lab(la);
         return 2;  // a subcommand is required, so this is not reached
       },
       std::cerr);
