@@ -38,7 +38,7 @@ std::string describe(const Scene& scene, size_t index, const DisassemblyStep& s)
 }  // namespace
 
 int assemble(const AssembleArgs& a) {
-  const Scene scene = loadScene(a.scene);
+  const Scene scene = readScene(a.scene, a.quiet);
   if (scene.obstacles.empty())
     throw InputError(a.scene + ": obstacles: empty; assemble needs a static part (the obstacles)");
   namespace fs = std::filesystem;

@@ -149,7 +149,7 @@ int bench(const BenchArgs& a) {
     double tightness;
   };
   std::vector<SceneEntry> scenes;
-  for (const std::string& f : a.scenes) scenes.push_back({f, loadScene(f).name, -1});
+  for (const std::string& f : a.scenes) scenes.push_back({f, readScene(f, true).name, -1});
   if (!a.sweepPacman.empty()) {
     fs::create_directories(a.output + "/scenes");
     for (const std::string& t : split(a.sweepPacman, ',')) {

@@ -5,6 +5,9 @@
 #include <stdexcept>
 
 #include "check/PathChecker.h"
+#include "import/AnyScene.h"
+#include "import/Discopygal.h"
+#include "scene/PathIO.h"
 #include "render/SvgRenderer.h"
 #include "scene/Errors.h"
 #include "scene/Generators.h"
@@ -24,8 +27,16 @@ std::string pose(const Pose& p) {
 }
 }  // namespace
 
+Scene readScene(const std::string& file, bool quiet) {
+  ImportNotes notes;
+  Scene s = loadAnyScene(file, notes);
+  if (!quiet)
+    for (const std::string& w : notes.warnings) std::fprintf(stderr, "mms: note: %s\n", w.c_str());
+  return s;
+}
+
 int validate(const ValidateArgs& a) {
-  const Scene s = loadScene(a.scene);
+  const Scene s = readScene(a.scene, a.quiet);
   if (a.quiet) return 0;
   size_t vertices = 0;
   for (const Ring& o : s.obstacles) vertices += o.size();
@@ -41,7 +52,7 @@ int validate(const ValidateArgs& a) {
 }
 
 int check(const CheckArgs& a) {
-  const Scene scene = loadScene(a.scene);
+  const Scene scene = readScene(a.scene, true);
   const Path path = loadPath(a.path, scene);
   const CollisionChecker checker(scene);
   PathCheckSettings settings;
@@ -64,7 +75,7 @@ int check(const CheckArgs& a) {
 }
 
 int render(const RenderArgs& a) {
-  const Scene scene = loadScene(a.scene);
+  const Scene scene = readScene(a.scene, true);
   Path path;
   if (!a.path.empty()) path = loadPath(a.path, scene);
   SvgOptions o;
@@ -98,6 +109,39 @@ int scenario(const ScenarioArgs& a) {
   }
   saveScene(s, a.output);
   std::printf("%s: written (%s)\n", a.output.c_str(), s.name.c_str());
+  return 0;
+}
+
+int importScene(const ImportArgs& a) {
+  const Scene s = readScene(a.input, a.quiet);
+  saveScene(s, a.output);
+  if (!a.quiet) {
+    size_t vertices = 0;
+    for (const Ring& o : s.obstacles) vertices += o.size();
+    std::printf("%s: written (%zu obstacles, %zu vertices; %zu robot(s))\n", a.output.c_str(),
+                s.obstacles.size(), vertices, s.robots.size());
+  }
+  return 0;
+}
+
+int exportScene(const ExportArgs& a) {
+  const Scene scene = readScene(a.scene, true);
+  ImportNotes notes;
+  std::string text;
+  if (a.to == "discopygal") {
+    if (!a.path.empty()) throw InputError(a.path + ": (PATH): --to discopygal writes the scene only");
+    text = discopygalJson(scene, notes);
+  } else {
+    if (a.path.empty()) throw InputError(a.scene + ": (PATH): --to ompl-path needs a path file");
+    if (scene.robots.size() != 1 || scene.robots[0].motion != Motion::Rigid)
+      throw InputError(a.scene + ": robots: OMPL.app's .path holds one rigid robot (x y theta)");
+    text = omplPathText(loadPath(a.path, scene).waypoints);
+  }
+  writeFileAtomically(a.output, text);
+  if (!a.quiet) {
+    for (const std::string& w : notes.warnings) std::fprintf(stderr, "mms: note: %s\n", w.c_str());
+    std::printf("%s: written (%s)\n", a.output.c_str(), a.to.c_str());
+  }
   return 0;
 }
 

@@ -4,10 +4,16 @@
 #include <string>
 #include <vector>
 
+#include "scene/Scene.h"
+
 namespace mms::cli {
 
 /// "a,b,,c" -> {"a", "b", "c"}: the items of a separated list, empty ones dropped.
 std::vector<std::string> split(const std::string& s, char sep);
+
+/// A scene in any format mms reads (mms JSON, OMPL.app .cfg, discopygal JSON); what a
+/// conversion changed goes to stderr as "mms: note: ..." unless quiet.
+Scene readScene(const std::string& file, bool quiet = false);
 
 struct ValidateArgs {
   std::string scene;
@@ -107,5 +113,21 @@ struct LabArgs {
   bool quick = false, noPacman = false, quiet = false;
 };
 int lab(const LabArgs& a);
+
+}  // namespace mms::cli
+
+namespace mms::cli {
+
+struct ImportArgs {
+  std::string input, output;
+  bool quiet = false;
+};
+int importScene(const ImportArgs& a);
+
+struct ExportArgs {
+  std::string scene, path, to, output;
+  bool quiet = false;
+};
+int exportScene(const ExportArgs& a);
 
 }  // namespace mms::cli

@@ -269,7 +269,7 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
 }  // namespace
 
 int plan(const PlanArgs& a) {
-  const Scene scene = loadScene(a.scene);
+  const Scene scene = readScene(a.scene, a.quiet);
   if (a.planner != "mms") return planOmpl(a, scene);
   if (scene.robots.size() == 2) return planTwo(a, scene);
   if (scene.robots.size() != 1)

@@ -265,6 +265,29 @@ int main(int argc, char** argv) {
   mergeCmd->add_option("DIRS", mergeDirs, "Benchmark folders")->required();
   mergeCmd->add_option("-o,--output", mergeOut, "Merged folder")->required();
 
+  ImportArgs ia;
+  auto* importCmd = app.add_subcommand(
+      "import",
+      "Convert a scene to mms-scene/1: an OMPL.app problem (FILE.cfg and the COLLADA meshes it\n"
+      "names) or a discopygal JSON scene. Notes on stderr say what the conversion changed.\n"
+      "(plan, validate, check, render and view read these files directly too)");
+  importCmd->add_option("FILE", ia.input, "OMPL.app .cfg or discopygal .json")->required();
+  importCmd->add_option("-o,--output", ia.output, "Scene file to write")->required();
+  importCmd->add_flag("-q,--quiet", ia.quiet, "Print nothing on success");
+
+  ExportArgs ea;
+  auto* exportCmd = app.add_subcommand(
+      "export",
+      "Write a scene as discopygal JSON (--to discopygal), or a path as OMPL.app's .path text\n"
+      "(--to ompl-path, one rigid robot)");
+  exportCmd->add_option("SCENE", ea.scene, "Scene file")->required();
+  exportCmd->add_option("PATH", ea.path, "Path file (for --to ompl-path)");
+  exportCmd->add_option("--to", ea.to, "discopygal or ompl-path")
+      ->required()
+      ->check(CLI::IsMember({"discopygal", "ompl-path"}));
+  exportCmd->add_option("-o,--output", ea.output, "File to write")->required();
+  exportCmd->add_flag("-q,--quiet", ea.quiet, "Print nothing on success");
+
   LabArgs la;
   auto* labCmd = app.add_subcommand(
       "lab",
@@ -331,6 +354,8 @@ int main(int argc, char** argv) {
           return bench(ba);
         }
         if (*mergeCmd) return benchMerge(mergeDirs, mergeOut);
+        if (*importCmd) return importScene(ia);
+        if (*exportCmd) return exportScene(ea);
         // Ctrl-C keeps its default (the lab writes its files only at the end, atomically).
         if (*labCmd) return lab(la);
         return 2;  // a subcommand is required, so this is not reached

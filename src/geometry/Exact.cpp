@@ -1,6 +1,9 @@
 #include "geometry/Exact.h"
 
 #include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Polygon_vertical_decomposition_2.h>
+#include <CGAL/convex_hull_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
 
 #include <cmath>
 
@@ -61,6 +64,93 @@ bool interiorsIntersect(const Ring& a, const Ring& b) {
   if (pa.is_clockwise_oriented()) pa.reverse_orientation();
   if (pb.is_clockwise_oriented()) pb.reverse_orientation();
   return CGAL::do_intersect(pa, pb);
+}
+
+namespace {
+
+using PolygonWithHolesE = CGAL::Polygon_with_holes_2<Kernel>;
+
+// Drops vertices whose neighbours are collinear with them (the union keeps the corners of the
+// triangles it merged along straight edges), exactly, before rounding.
+Ring roundedWithoutCollinear(const Polygon& poly) {
+  std::vector<Point> pts(poly.vertices_begin(), poly.vertices_end());
+  bool changed = true;
+  while (changed && pts.size() > 3) {
+    changed = false;
+    for (size_t i = 0; i < pts.size() && pts.size() > 3; ++i) {
+      const Point& a = pts[(i + pts.size() - 1) % pts.size()];
+      const Point& c = pts[(i + 1) % pts.size()];
+      if (CGAL::collinear(a, pts[i], c)) {
+        pts.erase(pts.begin() + long(i));
+        changed = true;
+        --i;
+      }
+    }
+  }
+  Ring r;
+  for (const Point& p : pts) r.push_back(toDouble(p));
+  return r;
+}
+
+}  // namespace
+
+std::vector<PolygonWithHoles> unionOfTriangles(const std::vector<std::array<Vec2, 3>>& triangles,
+                                               size_t& degenerate) {
+  degenerate = 0;
+  std::vector<Polygon> pieces;
+  for (const auto& t : triangles) {
+    Polygon p;
+    for (const Vec2& v : t) p.push_back(toExact(v));
+    const CGAL::Orientation o = CGAL::orientation(p[0], p[1], p[2]);
+    if (o == CGAL::COLLINEAR) {
+      ++degenerate;
+      continue;
+    }
+    if (o == CGAL::CLOCKWISE) p.reverse_orientation();
+    pieces.push_back(std::move(p));
+  }
+  std::vector<PolygonWithHolesE> joined;
+  if (!pieces.empty()) CGAL::join(pieces.begin(), pieces.end(), std::back_inserter(joined));
+  std::vector<PolygonWithHoles> out;
+  for (const PolygonWithHolesE& pwh : joined) {
+    PolygonWithHoles r;
+    r.outer = roundedWithoutCollinear(pwh.outer_boundary());
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) {
+      Polygon hole = *h;
+      hole.reverse_orientation();  // counter-clockwise, like every ring of a scene
+      r.holes.push_back(roundedWithoutCollinear(hole));
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+std::vector<Ring> decomposeHoles(const PolygonWithHoles& polygon) {
+  PolygonWithHolesE pwh(toExact(polygon.outer));
+  for (const Ring& h : polygon.holes) {
+    Polygon hole = toExact(h);
+    if (hole.orientation() == CGAL::COUNTERCLOCKWISE) hole.reverse_orientation();
+    pwh.add_hole(hole);
+  }
+  std::vector<Polygon> pieces;
+  CGAL::Polygon_vertical_decomposition_2<Kernel> decompose;
+  decompose(pwh, std::back_inserter(pieces));
+  std::vector<Ring> out;
+  for (const Polygon& p : pieces) {
+    Polygon q = p;
+    if (q.orientation() == CGAL::CLOCKWISE) q.reverse_orientation();
+    out.push_back(roundedWithoutCollinear(q));
+  }
+  return out;
+}
+
+Ring convexHull(const std::vector<Vec2>& points) {
+  std::vector<Point> in, out;
+  for (Vec2 v : points) in.push_back(toExact(v));
+  CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(out));
+  Ring r;
+  for (const Point& p : out) r.push_back(toDouble(p));
+  return r;
 }
 
 }  // namespace mms::exact

@@ -5,6 +5,9 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 
+#include <array>
+#include <vector>
+
 #include "geometry/Vec2.h"
 
 namespace mms::exact {
@@ -40,5 +43,25 @@ Polygon rotated(const Polygon& poly, const RationalAngle& angle);
 /// exact values) intersect. Touching boundaries do not count. The independent reference for
 /// the floating-point collision checker.
 bool interiorsIntersect(const Ring& a, const Ring& b);
+
+/// A polygon with holes in doubles (import only: scenes hold simple polygons).
+struct PolygonWithHoles {
+  Ring outer;
+  std::vector<Ring> holes;
+};
+
+/// The union of triangles, computed exactly (CGAL's aggregated join) from the doubles taken as
+/// exact values, as polygons with holes; collinear boundary vertices are dropped before the
+/// result is rounded to doubles. Triangles of zero area are skipped and counted in
+/// `degenerate`.
+std::vector<PolygonWithHoles> unionOfTriangles(const std::vector<std::array<Vec2, 3>>& triangles,
+                                               size_t& degenerate);
+
+/// Simple polygons whose union is the polygon with holes and whose interiors are disjoint
+/// (CGAL's vertical decomposition, convex pieces), for scenes that hold simple polygons only.
+std::vector<Ring> decomposeHoles(const PolygonWithHoles& polygon);
+
+/// The convex hull of the points (exact predicates), counter-clockwise.
+Ring convexHull(const std::vector<Vec2>& points);
 
 }  // namespace mms::exact

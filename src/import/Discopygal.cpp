@@ -1,0 +1,194 @@
+#include "import/Discopygal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "scene/Json.h"
+#include "scene/SceneIO.h"
+
+namespace mms {
+
+namespace {
+
+using json_in::Node;
+
+constexpr int kDiscSides = 32;
+
+// A regular polygon containing the disc: its inscribed circle is the disc.
+Ring discPolygon(Vec2 c, double r) {
+  Ring ring;
+  const double R = r / std::cos(M_PI / kDiscSides);
+  for (int i = 0; i < kDiscSides; ++i) {
+    double a = 2 * M_PI * i / kDiscSides;
+    ring.push_back({c.x + R * std::cos(a), c.y + R * std::sin(a)});
+  }
+  return ring;
+}
+
+Ring polygon(const Node& n) {
+  Ring r = n.ring(json_in::kMaxCoordinate, json_in::kMaxVertices);
+  // discopygal drops repeated points on load; so do we.
+  Ring out;
+  for (Vec2 v : r)
+    if (out.empty() || v.x != out.back().x || v.y != out.back().y) out.push_back(v);
+  if (out.size() > 1 && out.front().x == out.back().x && out.front().y == out.back().y)
+    out.pop_back();
+  return out;
+}
+
+double positive(const Node& n) {
+  double v = n.number(json_in::kMaxCoordinate);
+  if (!(v > 0)) n.fail("must be positive");
+  return v;
+}
+
+}  // namespace
+
+bool looksLikeDiscopygal(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) return false;
+  std::string head(4096, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(size_t(in.gcount()));
+  return head.find("\"__class__\"") != std::string::npos &&
+         head.find("\"format\"") == std::string::npos;
+}
+
+Scene importDiscopygal(const std::string& file, ImportNotes& notes) {
+  const json_in::Json doc = json_in::parseFile(file);
+  const Node root(doc, file, "(root)");
+  root.requireObject();
+  if (root.has("__class__") && root["__class__"].string() != "Scene")
+    root["__class__"].fail("expected \"Scene\"");
+  Scene scene;
+  scene.name = std::filesystem::path(file).stem().string();
+  const Node obstacles = root["obstacles"];
+  size_t discs = 0;
+  for (size_t i = 0; i < obstacles.arraySize(0, json_in::kMaxVertices); ++i) {
+    const Node o = obstacles[i];
+    o.requireObject();
+    const std::string cls = o["__class__"].string();
+    if (cls == "ObstaclePolygon") {
+      scene.obstacles.push_back(polygon(o["poly"]));
+    } else if (cls == "ObstacleDisc") {
+      scene.obstacles.push_back(
+          discPolygon(o["location"].point(json_in::kMaxCoordinate), positive(o["radius"])));
+      ++discs;
+    } else {
+      o["__class__"].fail("unknown obstacle class '" + cls +
+                          "' (expected ObstaclePolygon or ObstacleDisc)");
+    }
+  }
+  if (discs)
+    notes.warnings.push_back(std::to_string(discs) + " disc obstacle(s) as " +
+                             std::to_string(kDiscSides) + "-gons around the discs (conservative)");
+  const Node robots = root["robots"];
+  const size_t count = robots.arraySize(1, kMaxRobots);
+  for (size_t i = 0; i < count; ++i) {
+    const Node r = robots[i];
+    r.requireObject();
+    const std::string cls = r["__class__"].string();
+    Robot robot;
+    robot.name = "robot" + std::to_string(i);
+    if (r.has("data") && r["data"].has("name") && r["data"]["name"].json().is_string() &&
+        !r["data"]["name"].string().empty())
+      robot.name = r["data"]["name"].string();
+    if (cls == "RobotPolygon" || cls == "RobotDisc") {
+      robot.motion = Motion::Translate;
+      robot.shape = cls == "RobotPolygon" ? polygon(r["poly"])
+                                          : discPolygon({0, 0}, positive(r["radius"]));
+      const Vec2 s = r["start"].point(json_in::kMaxCoordinate),
+                 e = r["end"].point(json_in::kMaxCoordinate);
+      robot.start = {s.x, s.y, 0};
+      robot.goal = {e.x, e.y, 0};
+      if (cls == "RobotDisc")
+        notes.warnings.push_back(robot.name + ": disc robot as a " + std::to_string(kDiscSides) +
+                                 "-gon around the disc (conservative)");
+    } else if (cls == "RobotRod") {
+      const double len = positive(r["length"]);
+      const double w = len / 100;
+      robot.shape = {{0, -w / 2}, {len, -w / 2}, {len, w / 2}, {0, w / 2}};
+      for (const char* key : {"start", "end"}) {
+        const Node p = r[key];
+        p.arraySize(2, 2);
+        const Vec2 at = p[size_t(0)].point(json_in::kMaxCoordinate);
+        const double theta = p[size_t(1)].number(json_in::kMaxAngle);
+        (std::string(key) == "start" ? robot.start : robot.goal) = {at.x, at.y, theta};
+      }
+      notes.warnings.push_back(robot.name + ": rod of length " + std::to_string(len) +
+                               " as a rigid rectangle " + std::to_string(w) +
+                               " wide around it (conservative)");
+    } else {
+      r["__class__"].fail("unknown robot class '" + cls +
+                          "' (expected RobotPolygon, RobotDisc or RobotRod)");
+    }
+    scene.robots.push_back(robot);
+  }
+  // Bounds: the box around obstacles and robots at start and goal, grown by 5 %.
+  Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  auto grow = [&](Vec2 p) {
+    b.xmin = std::min(b.xmin, p.x), b.ymin = std::min(b.ymin, p.y);
+    b.xmax = std::max(b.xmax, p.x), b.ymax = std::max(b.ymax, p.y);
+  };
+  for (const Ring& o : scene.obstacles)
+    for (Vec2 v : o) grow(v);
+  for (const Robot& r : scene.robots)
+    for (const Pose& p : {r.start, r.goal}) {
+      const double c = std::cos(p.theta), s = std::sin(p.theta);
+      for (Vec2 v : r.shape) grow({p.x + c * v.x - s * v.y, p.y + s * v.x + c * v.y});
+    }
+  const double margin = 0.05 * std::max(b.xmax - b.xmin, b.ymax - b.ymin);
+  scene.bounds = {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
+  notes.warnings.push_back("bounds: none in discopygal; the box around obstacles and robots, "
+                           "grown by 5 %");
+  return parseScene(sceneToJson(scene), file);
+}
+
+std::string discopygalJson(const Scene& scene, ImportNotes& notes) {
+  using nlohmann::json;
+  auto points = [](const Ring& r) {
+    json a = json::array();
+    for (Vec2 v : r) a.push_back({v.x, v.y});
+    return a;
+  };
+  json obstacles = json::array();
+  for (const Ring& o : scene.obstacles)
+    obstacles.push_back({{"__class__", "ObstaclePolygon"}, {"poly", points(o)}, {"data", json::object()}});
+  // The bounds as four walls, 5 % of the scene's size thick, overlapping at the corners.
+  const Box& b = scene.bounds;
+  const double t = 0.05 * std::max(b.width(), b.height());
+  for (const Box& w : {Box{b.xmin - t, b.ymin - t, b.xmax + t, b.ymin},
+                       Box{b.xmin - t, b.ymax, b.xmax + t, b.ymax + t},
+                       Box{b.xmin - t, b.ymin, b.xmin, b.ymax},
+                       Box{b.xmax, b.ymin, b.xmax + t, b.ymax}})
+    obstacles.push_back({{"__class__", "ObstaclePolygon"},
+                         {"poly", points({{w.xmin, w.ymin}, {w.xmax, w.ymin}, {w.xmax, w.ymax},
+                                          {w.xmin, w.ymax}})},
+                         {"data", {{"name", "bounds"}}}});
+  notes.warnings.push_back("bounds written as four walls (discopygal scenes have none)");
+  json robots = json::array();
+  for (const Robot& r : scene.robots) {
+    Ring shape = r.shape;
+    if (r.motion == Motion::Rigid) {
+      const double c = std::cos(r.start.theta), s = std::sin(r.start.theta);
+      for (Vec2& v : shape) v = {c * v.x - s * v.y, s * v.x + c * v.y};
+      notes.warnings.push_back(r.name +
+                               ": rotating robot written as a translating RobotPolygon at its "
+                               "start angle (discopygal's polygon robots do not rotate)");
+    }
+    robots.push_back({{"__class__", "RobotPolygon"},
+                      {"poly", points(shape)},
+                      {"start", {r.start.x, r.start.y}},
+                      {"end", {r.goal.x, r.goal.y}},
+                      {"data", {{"name", r.name}}}});
+  }
+  json doc = {{"__class__", "Scene"},
+              {"obstacles", obstacles},
+              {"robots", robots},
+              {"metadata", {{"details", scene.name}, {"solvers", ""}, {"exported_by", "mms"}}}};
+  return doc.dump(2) + "\n";
+}
+
+}  // namespace mms

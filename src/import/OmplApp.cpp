@@ -1,0 +1,175 @@
+#include "import/OmplApp.h"
+
+#include <boost/property_tree/ini_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+#include "geometry/Exact.h"
+#include "import/Collada.h"
+#include "scene/Errors.h"
+#include "scene/SceneIO.h"
+
+namespace mms {
+
+namespace {
+
+// The [problem] section only: OMPL.app's [planner] sections repeat keys (aps=, cforest=),
+// which an INI reader rightly refuses.
+std::map<std::string, std::string> problemSection(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file + ": (file): cannot open");
+  std::ostringstream section;
+  std::string line;
+  bool inside = false, found = false;
+  while (std::getline(in, line)) {
+    std::string t = line;
+    t.erase(0, t.find_first_not_of(" \t\r"));
+    if (!t.empty() && t[0] == '[') {
+      inside = t.rfind("[problem]", 0) == 0;
+      found = found || inside;
+    }
+    if (inside) section << line << "\n";
+  }
+  if (!found) throw InputError(file + ": [problem]: no such section");
+  boost::property_tree::ptree pt;
+  std::istringstream text(section.str());
+  try {
+    boost::property_tree::ini_parser::read_ini(text, pt);
+  } catch (const boost::property_tree::ini_parser_error& e) {
+    throw InputError(file + ": [problem] line " + std::to_string(e.line()) + ": " + e.message());
+  }
+  std::map<std::string, std::string> kv;
+  for (const auto& [key, value] : pt.get_child("problem")) kv[key] = value.data();
+  return kv;
+}
+
+double number(const std::map<std::string, std::string>& kv, const std::string& key,
+              const std::string& file) {
+  auto it = kv.find(key);
+  if (it == kv.end()) throw InputError(file + ": [problem] " + key + ": missing");
+  std::istringstream in(it->second);
+  in.imbue(std::locale::classic());
+  double v;
+  std::string rest;
+  if (!(in >> v) || (in >> rest) || !std::isfinite(v))
+    throw InputError(file + ": [problem] " + key + ": not a number: '" + it->second + "'");
+  return v;
+}
+
+struct MeshShape {
+  std::vector<exact::PolygonWithHoles> polygons;
+  Vec2 centre;  // OMPL.app's reference point for a robot mesh
+};
+
+// A ring whose boundary touches itself at a vertex (CGAL's union writes such pinched
+// boundaries) as simple rings: split at each repeated vertex.
+void splitPinched(const Ring& ring, std::vector<Ring>& out) {
+  for (size_t i = 0; i < ring.size(); ++i)
+    for (size_t j = i + 1; j < ring.size(); ++j)
+      if (ring[i].x == ring[j].x && ring[i].y == ring[j].y) {
+        Ring a(ring.begin() + long(i), ring.begin() + long(j)), b(ring.begin() + long(j), ring.end());
+        b.insert(b.end(), ring.begin(), ring.begin() + long(i));
+        splitPinched(a, out);
+        splitPinched(b, out);
+        return;
+      }
+  if (ring.size() >= 3) out.push_back(ring);
+}
+
+MeshShape meshPolygons(const std::string& mesh, const std::string& what, ImportNotes& notes) {
+  if (!std::filesystem::is_regular_file(mesh))
+    throw InputError(mesh + ": (" + what + "): no such mesh file");
+  ColladaMesh m = readColladaPlanar(mesh);
+  size_t degenerate = 0;
+  std::vector<exact::PolygonWithHoles> polys = exact::unionOfTriangles(m.triangles, degenerate);
+  const std::string name = std::filesystem::path(mesh).filename().string();
+  if (degenerate)
+    notes.warnings.push_back(name + ": dropped " + std::to_string(degenerate) +
+                             " zero-area triangles (the extrusion's side faces)");
+  if (m.lineElements)
+    notes.warnings.push_back(name + ": dropped " + std::to_string(m.lineElements) +
+                             " line-only pieces (no area)");
+  return {polys, m.vertexMean};
+}
+
+}  // namespace
+
+Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes) {
+  const auto kv = problemSection(cfgFile);
+  const std::filesystem::path dir = std::filesystem::path(cfgFile).parent_path();
+  auto meshPath = [&](const std::string& key) {
+    auto it = kv.find(key);
+    if (it == kv.end() || it->second.empty())
+      throw InputError(cfgFile + ": [problem] " + key + ": missing");
+    return (dir / it->second).string();
+  };
+  if (auto c = kv.find("control"); c != kv.end())
+    notes.warnings.push_back(cfgFile + ": control = " + c->second +
+                             " ignored: planned as a geometric (holonomic) problem");
+
+  Scene scene;
+  auto name = kv.find("name");
+  scene.name = name != kv.end() ? name->second : std::filesystem::path(cfgFile).stem().string();
+
+  const MeshShape robotMesh = meshPolygons(meshPath("robot"), "[problem] robot", notes);
+  const auto& robotPolys = robotMesh.polygons;
+  if (robotPolys.empty())
+    throw InputError(meshPath("robot") + ": ([problem] robot): the mesh has no area");
+  Robot robot;
+  robot.name = std::filesystem::path(meshPath("robot")).stem().string();
+  if (robotPolys.size() == 1) {
+    robot.shape = robotPolys[0].outer;
+    if (!robotPolys[0].holes.empty())
+      notes.warnings.push_back(robot.name + ": holes of the robot filled (conservative)");
+  } else {
+    std::vector<Vec2> all;
+    for (const auto& p : robotPolys) all.insert(all.end(), p.outer.begin(), p.outer.end());
+    robot.shape = exact::convexHull(all);
+    notes.warnings.push_back(robot.name + ": the mesh is " + std::to_string(robotPolys.size()) +
+                             " separate pieces; planned as their convex hull (conservative: a "
+                             "path for the hull is valid for the pieces)");
+  }
+  // OMPL.app's reference point: the mean of the mesh's vertices.
+  for (Vec2& v : robot.shape) v = {v.x - robotMesh.centre.x, v.y - robotMesh.centre.y};
+  robot.start = {number(kv, "start.x", cfgFile), number(kv, "start.y", cfgFile),
+                 number(kv, "start.theta", cfgFile)};
+  robot.goal = {number(kv, "goal.x", cfgFile), number(kv, "goal.y", cfgFile),
+                number(kv, "goal.theta", cfgFile)};
+  scene.robots.push_back(robot);
+
+  size_t split = 0;
+  for (const exact::PolygonWithHoles& p : meshPolygons(meshPath("world"), "[problem] world", notes).polygons) {
+    if (p.holes.empty()) {
+      splitPinched(p.outer, scene.obstacles);
+      continue;
+    }
+    split += 1;
+    for (const Ring& piece : exact::decomposeHoles(p)) splitPinched(piece, scene.obstacles);
+  }
+  if (split)
+    notes.warnings.push_back(std::to_string(split) +
+                             " obstacle(s) with holes split into convex pieces (scenes hold "
+                             "simple polygons)");
+  scene.bounds = {number(kv, "volume.min.x", cfgFile), number(kv, "volume.min.y", cfgFile),
+                  number(kv, "volume.max.x", cfgFile), number(kv, "volume.max.y", cfgFile)};
+  // Validate as a loaded file would be (one definition of a valid scene).
+  return parseScene(sceneToJson(scene), cfgFile);
+}
+
+std::string omplPathText(const std::vector<Config>& waypoints) {
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out << std::setprecision(17);
+  for (const Config& q : waypoints) {
+    for (size_t i = 0; i < q.size(); ++i) out << (i ? " " : "") << q[i];
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace mms

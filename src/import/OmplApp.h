@@ -1,0 +1,23 @@
+#pragma once
+// OMPL.app planar problems (.cfg + COLLADA meshes) as mms scenes: the [problem] section names
+// the robot and world meshes, start, goal and the volume; each mesh becomes exact polygons,
+// the union of its triangles projected on the X/Z plane (CGAL).
+#include <string>
+#include <vector>
+
+#include "scene/Scene.h"
+
+namespace mms {
+
+struct ImportNotes {
+  std::vector<std::string> warnings;  // what was dropped or changed, one line each
+};
+
+/// Throws InputError ("FILE: FIELD: PROBLEM") on anything it cannot read or convert. The
+/// scene is validated as if loaded from a file.
+Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes);
+
+/// Writes a path as OMPL.app's .path text: one "x y theta" line per waypoint (one rigid robot).
+std::string omplPathText(const std::vector<Config>& waypoints);
+
+}  // namespace mms
