@@ -11,6 +11,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   libgtest-dev googletest libbenchmark-dev
   librsvg2-bin
+  libpugixml-dev libpng-dev
+  chromium
   ompl-demos
 )
 

@@ -7,10 +7,11 @@
 #include "check/PathChecker.h"
 #include "import/AnyScene.h"
 #include "import/Discopygal.h"
-#include "scene/PathIO.h"
+#include "render/HtmlViewer.h"
 #include "render/SvgRenderer.h"
 #include "scene/Errors.h"
 #include "scene/Generators.h"
+#include "scene/PathIO.h"
 #include "scene/RandomScene.h"
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
@@ -87,6 +88,16 @@ int render(const RenderArgs& a) {
   return 0;
 }
 
+int view(const ViewArgs& a) {
+  const Scene scene = readScene(a.scene, true);
+  Path path;
+  if (!a.path.empty()) path = loadPath(a.path, scene);
+  writeFileAtomically(a.output, renderHtmlViewer(scene, a.path.empty() ? nullptr : &path));
+  std::printf("%s: written (open it in a browser; #t=0.5 shows the motion half-way)\n",
+              a.output.c_str());
+  return 0;
+}
+
 int scenario(const ScenarioArgs& a) {
   Scene s;
   if (a.name == "pacman")
@@ -129,7 +140,8 @@ int exportScene(const ExportArgs& a) {
   ImportNotes notes;
   std::string text;
   if (a.to == "discopygal") {
-    if (!a.path.empty()) throw InputError(a.path + ": (PATH): --to discopygal writes the scene only");
+    if (!a.path.empty())
+      throw InputError(a.path + ": (PATH): --to discopygal writes the scene only");
     text = discopygalJson(scene, notes);
   } else {
     if (a.path.empty()) throw InputError(a.scene + ": (PATH): --to ompl-path needs a path file");

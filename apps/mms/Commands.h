@@ -27,6 +27,11 @@ struct CheckArgs {
 };
 int check(const CheckArgs& a);
 
+struct ViewArgs {
+  std::string scene, path, output;
+};
+int view(const ViewArgs& a);
+
 struct RenderArgs {
   std::string scene, path, output;
   double width = 800;
@@ -48,8 +53,9 @@ struct PlanArgs {
   size_t nTheta = 0, nLines = 0, nFixings = 0;  // 0: the planner's default
   double expandShare = -1;                      // < 0: the planner's default
   bool quiet = false;
-  bool svgRoadmap = false;  // draw line points and the path's slice cells
-  std::string queries;      // mms-queries/1 file: several queries on one roadmap
+  bool svgRoadmap = false;   // draw line points and the path's slice cells
+  bool saveRoadmap = false;  // keep them in the path file (for mms view)
+  std::string queries;       // mms-queries/1 file: several queries on one roadmap
   std::string planner = "mms";
   std::string statsJson;  // write a machine-readable summary of the run here
   double resolution = 0.002, range = 0, segmentFactor = 10;

@@ -342,6 +342,22 @@ int plan(const PlanArgs& a) {
                     {"graph_nodes", st.graphNodes},
                     {"graph_edges", st.graphEdges},
                     {"path_cells", st.pathCells}}}};
+    if (a.saveRoadmap) {
+      // The viewer's overlay: the free-space cells the path uses, and every line's point.
+      nlohmann::json cells = nlohmann::json::array(), points = nlohmann::json::array();
+      for (const ConnectivityGraph::Node& n : res.cells)
+        if (n.kind == ConnectivityGraph::Kind::SliceCell) {
+          nlohmann::json rings = nlohmann::json::array();
+          for (const Ring& r : planner.slices()[n.manifold].cell(n.cell)) {
+            nlohmann::json ring = nlohmann::json::array();
+            for (Vec2 v : r) ring.push_back({v.x, v.y});
+            rings.push_back(ring);
+          }
+          cells.push_back(rings);
+        }
+      for (const Line& l : planner.lines()) points.push_back({l.point().x, l.point().y});
+      path.extra["roadmap"] = {{"cells", cells}, {"points", points}};
+    }
     const bool many = queries.size() > 1;
     if (!a.output.empty()) savePath(path, queryScene, many ? numbered(a.output, qi) : a.output);
     if (!a.svg.empty()) {

@@ -147,6 +147,9 @@ int main(int argc, char** argv) {
   planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
                     "In the SVG, also draw the lines' points and the free-space cells of the "
                     "slices the path uses");
+  planCmd->add_flag("--save-roadmap", pa.saveRoadmap,
+                    "One robot: keep the free-space cells the path uses and the lines' points in "
+                    "the path file, for mms view");
   planCmd->add_option(
       "--queries", pa.queries,
       "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "
@@ -265,6 +268,16 @@ int main(int argc, char** argv) {
   mergeCmd->add_option("DIRS", mergeDirs, "Benchmark folders")->required();
   mergeCmd->add_option("-o,--output", mergeOut, "Merged folder")->required();
 
+  ViewArgs wa;
+  auto* viewCmd = app.add_subcommand(
+      "view",
+      "Write one self-contained HTML file that draws the scene and plays the path (play/pause,\n"
+      "time slider, speed, traces, the planner's cells with --save-roadmap paths). Open it in\n"
+      "any browser; FILE.html#t=0.5 opens it half-way through the motion");
+  viewCmd->add_option("SCENE", wa.scene, "Scene file (any format mms reads)")->required();
+  viewCmd->add_option("PATH", wa.path, "Path file to play");
+  viewCmd->add_option("-o,--output", wa.output, "HTML file to write")->required();
+
   ImportArgs ia;
   auto* importCmd = app.add_subcommand(
       "import",
@@ -355,6 +368,7 @@ int main(int argc, char** argv) {
         }
         if (*mergeCmd) return benchMerge(mergeDirs, mergeOut);
         if (*importCmd) return importScene(ia);
+        if (*viewCmd) return view(wa);
         if (*exportCmd) return exportScene(ea);
         // Ctrl-C keeps its default (the lab writes its files only at the end, atomically).
         if (*labCmd) return lab(la);

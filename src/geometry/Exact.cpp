@@ -2,8 +2,8 @@
 
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Polygon_vertical_decomposition_2.h>
-#include <CGAL/convex_hull_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/convex_hull_2.h>
 
 #include <cmath>
 

@@ -48,14 +48,16 @@ class Reader {
   const pugi::xml_node& byId(const std::string& url, const char* what) const {
     std::string id = !url.empty() && url[0] == '#' ? url.substr(1) : url;
     auto it = ids_.find(id);
-    if (it == ids_.end()) throw InputError(file_ + ": " + what + ": no element with id '" + id + "'");
+    if (it == ids_.end())
+      throw InputError(file_ + ": " + what + ": no element with id '" + id + "'");
     return it->second;
   }
 
   void geometry(const pugi::xml_node& geom, const Matrix& m, ColladaMesh& out) const {
     for (pugi::xml_node mesh : geom.children("mesh")) {
       for (pugi::xml_node lines : mesh.children("lines")) (void)lines, ++out.lineElements;
-      for (pugi::xml_node linestrips : mesh.children("linestrips")) (void)linestrips, ++out.lineElements;
+      for (pugi::xml_node linestrips : mesh.children("linestrips"))
+        (void)linestrips, ++out.lineElements;
       for (pugi::xml_node tris : mesh.children("triangles")) triangles(tris, m, out);
       if (mesh.child("polylist") || mesh.child("polygons"))
         throw InputError(file_ + ": <mesh>: polylist/polygons are not supported, only triangles");
@@ -121,7 +123,8 @@ class Reader {
       return planar(i);
     };
     const size_t per = 3 * stride;
-    if (p.size() % per != 0) throw InputError(file_ + ": <triangles><p>: index count not 3 x inputs");
+    if (p.size() % per != 0)
+      throw InputError(file_ + ": <triangles><p>: index count not 3 x inputs");
     for (size_t t = 0; t + per <= p.size(); t += per)
       out.triangles.push_back({project(p[t + vertexOffset]), project(p[t + stride + vertexOffset]),
                                project(p[t + 2 * stride + vertexOffset])});
@@ -176,8 +179,8 @@ ColladaMesh readColladaPlanar(const std::string& file) {
   pugi::xml_document doc;
   pugi::xml_parse_result ok = doc.load_file(file.c_str());
   if (!ok)
-    throw InputError(file + ": (XML, offset " + std::to_string(ok.offset) + "): " +
-                     ok.description());
+    throw InputError(file + ": (XML, offset " + std::to_string(ok.offset) +
+                     "): " + ok.description());
   pugi::xml_node root = doc.child("COLLADA");
   if (!root) throw InputError(file + ": (root): not a COLLADA document");
   Reader r(file, doc);

@@ -12,7 +12,7 @@ namespace mms {
 
 struct ColladaMesh {
   std::vector<std::array<Vec2, 3>> triangles;  // projected; may be degenerate (side faces)
-  size_t lineElements = 0;  // <lines> pieces: no area, left out
+  size_t lineElements = 0;                     // <lines> pieces: no area, left out
   // Mean of the vertex positions the triangles' sources hold (projected): OMPL.app moves a
   // robot's mesh so that this point (assimp's scene centre) is its reference point.
   Vec2 vertexMean{0, 0};

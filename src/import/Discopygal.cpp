@@ -97,8 +97,8 @@ Scene importDiscopygal(const std::string& file, ImportNotes& notes) {
       robot.name = r["data"]["name"].string();
     if (cls == "RobotPolygon" || cls == "RobotDisc") {
       robot.motion = Motion::Translate;
-      robot.shape = cls == "RobotPolygon" ? polygon(r["poly"])
-                                          : discPolygon({0, 0}, positive(r["radius"]));
+      robot.shape =
+          cls == "RobotPolygon" ? polygon(r["poly"]) : discPolygon({0, 0}, positive(r["radius"]));
       const Vec2 s = r["start"].point(json_in::kMaxCoordinate),
                  e = r["end"].point(json_in::kMaxCoordinate);
       robot.start = {s.x, s.y, 0};
@@ -141,8 +141,9 @@ Scene importDiscopygal(const std::string& file, ImportNotes& notes) {
     }
   const double margin = 0.05 * std::max(b.xmax - b.xmin, b.ymax - b.ymin);
   scene.bounds = {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
-  notes.warnings.push_back("bounds: none in discopygal; the box around obstacles and robots, "
-                           "grown by 5 %");
+  notes.warnings.push_back(
+      "bounds: none in discopygal; the box around obstacles and robots, "
+      "grown by 5 %");
   return parseScene(sceneToJson(scene), file);
 }
 
@@ -155,18 +156,19 @@ std::string discopygalJson(const Scene& scene, ImportNotes& notes) {
   };
   json obstacles = json::array();
   for (const Ring& o : scene.obstacles)
-    obstacles.push_back({{"__class__", "ObstaclePolygon"}, {"poly", points(o)}, {"data", json::object()}});
+    obstacles.push_back(
+        {{"__class__", "ObstaclePolygon"}, {"poly", points(o)}, {"data", json::object()}});
   // The bounds as four walls, 5 % of the scene's size thick, overlapping at the corners.
   const Box& b = scene.bounds;
   const double t = 0.05 * std::max(b.width(), b.height());
-  for (const Box& w : {Box{b.xmin - t, b.ymin - t, b.xmax + t, b.ymin},
-                       Box{b.xmin - t, b.ymax, b.xmax + t, b.ymax + t},
-                       Box{b.xmin - t, b.ymin, b.xmin, b.ymax},
-                       Box{b.xmax, b.ymin, b.xmax + t, b.ymax}})
-    obstacles.push_back({{"__class__", "ObstaclePolygon"},
-                         {"poly", points({{w.xmin, w.ymin}, {w.xmax, w.ymin}, {w.xmax, w.ymax},
-                                          {w.xmin, w.ymax}})},
-                         {"data", {{"name", "bounds"}}}});
+  for (const Box& w :
+       {Box{b.xmin - t, b.ymin - t, b.xmax + t, b.ymin},
+        Box{b.xmin - t, b.ymax, b.xmax + t, b.ymax + t}, Box{b.xmin - t, b.ymin, b.xmin, b.ymax},
+        Box{b.xmax, b.ymin, b.xmax + t, b.ymax}})
+    obstacles.push_back(
+        {{"__class__", "ObstaclePolygon"},
+         {"poly", points({{w.xmin, w.ymin}, {w.xmax, w.ymin}, {w.xmax, w.ymax}, {w.xmin, w.ymax}})},
+         {"data", {{"name", "bounds"}}}});
   notes.warnings.push_back("bounds written as four walls (discopygal scenes have none)");
   json robots = json::array();
   for (const Robot& r : scene.robots) {

@@ -72,7 +72,8 @@ void splitPinched(const Ring& ring, std::vector<Ring>& out) {
   for (size_t i = 0; i < ring.size(); ++i)
     for (size_t j = i + 1; j < ring.size(); ++j)
       if (ring[i].x == ring[j].x && ring[i].y == ring[j].y) {
-        Ring a(ring.begin() + long(i), ring.begin() + long(j)), b(ring.begin() + long(j), ring.end());
+        Ring a(ring.begin() + long(i), ring.begin() + long(j)),
+            b(ring.begin() + long(j), ring.end());
         b.insert(b.end(), ring.begin(), ring.begin() + long(i));
         splitPinched(a, out);
         splitPinched(b, out);
@@ -143,7 +144,8 @@ Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes) {
   scene.robots.push_back(robot);
 
   size_t split = 0;
-  for (const exact::PolygonWithHoles& p : meshPolygons(meshPath("world"), "[problem] world", notes).polygons) {
+  for (const exact::PolygonWithHoles& p :
+       meshPolygons(meshPath("world"), "[problem] world", notes).polygons) {
     if (p.holes.empty()) {
       splitPinched(p.outer, scene.obstacles);
       continue;

@@ -1,0 +1,25 @@
+#pragma once
+// `mms view`: one self-contained HTML file (inline script and data, nothing fetched) that draws
+// the scene on a canvas and plays the path: play/pause, a time slider, speed, each robot's
+// trace, and the planner's free-space cells and line points when the path file holds them
+// ("roadmap", written by `mms plan --save-roadmap`). The page's hash sets the slider:
+// FILE.html#t=0.5 shows the motion half-way (by duration) and paused.
+//
+// Layout, fixed so pictures can be checked: the canvas sits at the page's top-left corner,
+// kCanvasWidth pixels wide, with the bounds scaled to fit inside a kPad margin, y upwards.
+// A segment's duration is proportional to how far any robot point moves on it:
+// max over robots of |dp| + radius * |dtheta|.
+#include <string>
+
+#include "scene/PathIO.h"
+
+namespace mms {
+
+inline constexpr double kViewerCanvasWidth = 800, kViewerPad = 10;
+
+std::string renderHtmlViewer(const Scene& scene, const Path* path);
+
+/// Where the viewer draws scene point p (CSS pixels from the canvas's top-left corner).
+Vec2 viewerPixel(const Scene& scene, Vec2 p);
+
+}  // namespace mms

@@ -1,0 +1,362 @@
+// Foreign formats: OMPL.app problems (the real ones from ../shared when present, and small
+// COLLADA files written here), discopygal scenes, OMPL.app .path export; and the HTML viewer,
+// drawn by a real headless browser.
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "Support.h"
+#include "check/PathChecker.h"
+#include "geometry/PolygonOps.h"
+#include "import/AnyScene.h"
+#include "import/Discopygal.h"
+#include "import/OmplApp.h"
+#include "render/HtmlViewer.h"
+#include "scene/PathIO.h"
+#include "scene/SceneIO.h"
+
+namespace mms {
+namespace {
+
+using test::quote;
+using test::runMms;
+using test::TempDir;
+
+const std::string kOmplApp = test::sourceDir() + "/../shared/data/omplapp-2d";
+
+// A COLLADA square [0,2]x[0,1] in the X/Z plane, extruded along Y (top, bottom and side faces),
+// under a node that scales by 10 and translates by (5, 0, -3).
+const char* kSquareDae = R"(<?xml version="1.0"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+ <library_geometries><geometry id="g"><mesh>
+  <source id="pos"><float_array id="pa" count="24">0 0 0  0.2 0 0  0.2 0 0.1  0 0 0.1  0 1 0  0.2 1 0  0.2 1 0.1  0 1 0.1</float_array>
+   <technique_common><accessor source="#pa" count="8" stride="3"/></technique_common></source>
+  <vertices id="v"><input semantic="POSITION" source="#pos"/></vertices>
+  <triangles count="6"><input semantic="VERTEX" source="#v" offset="0"/>
+   <p>0 1 2  0 2 3  4 5 6  4 6 7  0 1 5  0 5 4</p></triangles>
+ </mesh></geometry></library_geometries>
+ <library_visual_scenes><visual_scene id="s"><node><node>
+  <matrix>10 0 0 5  0 10 0 0  0 0 10 -3  0 0 0 1</matrix>
+  <instance_geometry url="#g"/></node></node></visual_scene></library_visual_scenes>
+ <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>)";
+
+std::string cfgText(const std::string& robot, const std::string& world, bool withGoal = true) {
+  return "[problem]\nname = Square\nrobot = " + robot + "\nworld = " + world +
+         "\nstart.x = -5\nstart.y = 0\nstart.theta = 0\n" +
+         (withGoal ? "goal.x = -5\ngoal.y = 5\ngoal.theta = 1.5\n" : "") +
+         "volume.min.x = -10\nvolume.min.y = -10\nvolume.max.x = 10\nvolume.max.y = 10\n"
+         "[planner]\naps=\naps=\n";
+}
+
+TEST(Import, ColladaMeshBecomesTheExactUnionOfItsTriangles) {
+  TempDir dir;
+  dir.file("square.dae", kSquareDae);
+  const std::string cfg = dir.file("square.cfg", cfgText("square.dae", "square.dae"));
+  ImportNotes notes;
+  const Scene s = importOmplApp(cfg, notes);
+  ASSERT_EQ(s.obstacles.size(), 1u);
+  // x = 10 * X + 5 in [5, 7], y = 10 * Z - 3 in [-3, -2]: four corners, nothing else.
+  const Ring& o = s.obstacles[0];
+  ASSERT_EQ(o.size(), 4u);
+  for (Vec2 v : o) {
+    EXPECT_TRUE(v.x == 5 || v.x == 7) << v.x;
+    EXPECT_TRUE(v.y == -3 || v.y == -2) << v.y;
+  }
+  // The robot is centred on its vertices' mean (OMPL.app's reference point): (6, -2.5).
+  for (Vec2 v : s.robots[0].shape) {
+    EXPECT_DOUBLE_EQ(std::abs(v.x), 1.0);
+    EXPECT_DOUBLE_EQ(std::abs(v.y), 0.5);
+  }
+  EXPECT_EQ(s.robots[0].goal.theta, 1.5);
+  bool sideFaces = false;
+  for (const std::string& w : notes.warnings) sideFaces |= w.find("zero-area") != std::string::npos;
+  EXPECT_TRUE(sideFaces) << "the side faces are dropped, with a note";
+}
+
+TEST(Import, BadOmplAppInputIsOneLineNamingFileAndField) {
+  TempDir dir;
+  dir.file("square.dae", kSquareDae);
+  dir.file("broken.dae", "<COLLADA><library_geometries>");
+  struct Case {
+    std::string cfg, expect;
+  } cases[] = {
+      {cfgText("square.dae", "square.dae", false), "goal.x: missing"},
+      {cfgText("square.dae", "nothere.dae"), "no such mesh file"},
+      {cfgText("square.dae", "broken.dae"), "broken.dae: (XML"},
+      {"[other]\nx = 1\n", "[problem]: no such section"},
+      {cfgText("square.dae", "square.dae") + "", ""},
+  };
+  for (const Case& c : cases) {
+    const std::string cfg = dir.file("p.cfg", c.cfg);
+    auto r = runMms("import " + quote(cfg) + " -o " + quote(dir.path("out.json")));
+    if (c.expect.empty()) {
+      EXPECT_EQ(r.code, 0) << r.err;
+      continue;
+    }
+    EXPECT_EQ(r.code, 2) << c.expect;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+}
+
+// The real problems: present in the project's workspace, absent from a user's clone.
+std::vector<std::string> omplAppProblems() {
+  std::vector<std::string> cfgs;
+  if (!std::filesystem::is_directory(kOmplApp)) return cfgs;
+  for (const auto& e : std::filesystem::directory_iterator(kOmplApp))
+    if (e.path().extension() == ".cfg") cfgs.push_back(e.path().string());
+  std::sort(cfgs.begin(), cfgs.end());
+  return cfgs;
+}
+
+TEST(Import, EveryOmplAppProblemImportsAndItsOwnSolutionsAreFree) {
+  const auto cfgs = omplAppProblems();
+  if (cfgs.empty())
+    GTEST_SKIP() << "OMPL.app's problems are not here (" << kOmplApp
+                 << " is absent: they are third-party data kept outside the repository)";
+  ASSERT_GE(cfgs.size(), 7u);
+  size_t certified = 0;
+  for (const std::string& cfg : cfgs) {
+    ImportNotes notes;
+    const Scene s = importOmplApp(cfg, notes);  // validated inside
+    EXPECT_EQ(s.robots.size(), 1u) << cfg;
+    EXPECT_GT(s.obstacles.size(), 0u) << cfg;
+    // OMPL.app's own solution paths (x y theta per line) are an independent reference for the
+    // conversion: where OMPL.app checked them at a fine resolution, every state must be free
+    // here too, and most paths certify as continuous motions.
+    const std::string pathFile = cfg.substr(0, cfg.size() - 4) + ".path";
+    if (!std::filesystem::exists(pathFile) ||
+        notes.warnings.end() !=
+            std::find_if(notes.warnings.begin(), notes.warnings.end(), [](const std::string& w) {
+              return w.find("convex hull") != std::string::npos;
+            }))
+      continue;
+    std::ifstream in(pathFile);
+    Path p;
+    for (std::string line; std::getline(in, line);) {
+      std::istringstream l(line);
+      Config q(3);
+      if (l >> q[0] >> q[1] >> q[2]) p.waypoints.push_back(q);
+    }
+    ASSERT_GT(p.waypoints.size(), 2u) << pathFile;
+    const CollisionChecker checker(s);
+    for (const Config& q : p.waypoints) EXPECT_TRUE(checker.isFree(q)) << pathFile;
+    Scene query = s;
+    query.robots[0].start = {p.waypoints.front()[0], p.waypoints.front()[1],
+                             p.waypoints.front()[2]};
+    query.robots[0].goal = {p.waypoints.back()[0], p.waypoints.back()[1], p.waypoints.back()[2]};
+    certified += checkPath(query, CollisionChecker(query), p).ok;
+  }
+  EXPECT_GE(certified, 3u) << "BugTrap, Maze and RandomPolygons' solutions certify";
+}
+
+TEST(Import, EveryOmplAppProblemIsPlannedWithACertifiedPath) {
+  const auto cfgs = omplAppProblems();
+  if (cfgs.empty())
+    GTEST_SKIP() << "OMPL.app's problems are not here (" << kOmplApp << " is absent)";
+  TempDir dir;
+  for (const std::string& cfg : cfgs) {
+    const std::string out = dir.path("p.json");
+    auto r = runMms("plan " + quote(cfg) + " -q --seed 1 --time-limit " +
+                    std::to_string(test::planSeconds(60)) + " -o " + quote(out));
+    ASSERT_EQ(r.code, 0) << cfg << ": " << r.err;
+    auto c = runMms("check " + quote(cfg) + " " + quote(out));
+    EXPECT_EQ(c.code, 0) << cfg << ": " << c.out << c.err;
+    if (test::kSanitized) break;  // one problem suffices where everything runs 20x slower
+  }
+}
+
+std::string discopygalScene() {
+  return R"({"__class__": "Scene",
+    "obstacles": [
+      {"__class__": "ObstaclePolygon", "poly": [[-1, -1], [1, -1], [1, 1], [-1, 1], [-1, 1]], "data": {}},
+      {"__class__": "ObstacleDisc", "location": [4, 4], "radius": 1.5, "data": {}}],
+    "robots": [
+      {"__class__": "RobotPolygon", "poly": [[0, 0], [1, 0], [0, 1]], "start": [-6, -6], "end": [6, -6], "data": {"name": "tri"}},
+      {"__class__": "RobotDisc", "radius": 0.5, "start": [-6, 6], "end": [6, 6], "data": {}},
+      {"__class__": "RobotRod", "length": 2, "start": [[-7, 0], 1.57], "end": [[5, 0], 0], "data": {}}],
+    "metadata": {"version": "1.1.1", "solvers": "", "details": ""}})";
+}
+
+TEST(Import, DiscopygalScenesConvertConservatively) {
+  TempDir dir;
+  const std::string file = dir.file("d.json", discopygalScene());
+  EXPECT_EQ(detectSceneFormat(file), SceneFormat::Discopygal);
+  ImportNotes notes;
+  const Scene s = importDiscopygal(file, notes);
+  ASSERT_EQ(s.obstacles.size(), 2u);
+  EXPECT_EQ(s.obstacles[0].size(), 4u) << "the repeated vertex dropped";
+  // The disc's polygon contains the disc: every edge is at least the radius from the centre.
+  auto inradius = [](const Ring& r, Vec2 c) {
+    double d = INFINITY;
+    for (size_t i = 0; i < r.size(); ++i) {
+      Vec2 a = r[i], b = r[(i + 1) % r.size()];
+      double len = std::hypot(b.x - a.x, b.y - a.y);
+      d = std::min(d, std::abs((b.x - a.x) * (a.y - c.y) - (a.x - c.x) * (b.y - a.y)) / len);
+    }
+    return d;
+  };
+  EXPECT_GE(inradius(s.obstacles[1], {4, 4}), 1.5 * (1 - 1e-12));
+  ASSERT_EQ(s.robots.size(), 3u);
+  EXPECT_EQ(s.robots[0].name, "tri");
+  EXPECT_EQ(s.robots[0].motion, Motion::Translate);
+  EXPECT_EQ(s.robots[1].motion, Motion::Translate);
+  EXPECT_GE(inradius(s.robots[1].shape, {0, 0}), 0.5 * (1 - 1e-12));
+  // The rod: rigid, from its first end (the reference point) along theta, inside the rectangle.
+  const Robot& rod = s.robots[2];
+  EXPECT_EQ(rod.motion, Motion::Rigid);
+  EXPECT_EQ(rod.start.theta, 1.57);
+  EXPECT_TRUE(insideRing(rod.shape, {1.0, 0.0})) << "the rod's middle";
+  double xmin = INFINITY, xmax = -INFINITY;
+  for (Vec2 v : rod.shape) xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x);
+  EXPECT_EQ(xmin, 0);
+  EXPECT_EQ(xmax, 2);
+
+  // Export and import again: the obstacles (and four walls for the bounds) and the robots'
+  // ends survive.
+  ImportNotes exportNotes;
+  const std::string back = dir.file("back.json", discopygalJson(s, exportNotes));
+  ImportNotes again;
+  const Scene t = importDiscopygal(back, again);
+  EXPECT_EQ(t.obstacles.size(), s.obstacles.size() + 4);
+  ASSERT_EQ(t.robots.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(t.robots[i].start.x, s.robots[i].start.x);
+    EXPECT_EQ(t.robots[i].goal.y, s.robots[i].goal.y);
+  }
+}
+
+TEST(Import, BadDiscopygalInputIsOneLineNamingTheField) {
+  TempDir dir;
+  struct Case {
+    std::string text, expect;
+  } cases[] = {
+      {R"({"__class__": "Scene", "obstacles": [], "robots": [{"__class__": "RobotBlob", "data": {}}], "metadata": {}})",
+       "robots[0].__class__: unknown robot class 'RobotBlob'"},
+      {R"({"__class__": "Scene", "obstacles": [{"__class__": "ObstacleDisc", "location": [0, 0], "radius": -1, "data": {}}], "robots": [], "metadata": {}})",
+       "obstacles[0].radius: must be positive"},
+      {R"({"__class__": "Scene", "obstacles": [], "metadata": {}})", "robots"},
+  };
+  for (const Case& c : cases) {
+    const std::string f = dir.file("bad.json", c.text);
+    auto r = runMms("import " + quote(f) + " -o " + quote(dir.path("o.json")));
+    EXPECT_EQ(r.code, 2) << c.text;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.path("o.json")));
+  }
+}
+
+TEST(Import, OmplPathExportHasOneStatePerLine) {
+  TempDir dir;
+  const std::string scene = test::scenario("one-robot/bar-slot.json");
+  const std::string path = test::scenario("one-robot/bar-slot.path.json");
+  const std::string out = dir.path("bar.path");
+  auto r =
+      runMms("export " + quote(scene) + " " + quote(path) + " --to ompl-path -o " + quote(out));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Path p = loadPath(path, loadScene(scene));
+  std::istringstream in(test::readFile(out));
+  size_t lines = 0;
+  for (std::string line; std::getline(in, line); ++lines) {
+    std::istringstream l(line);
+    Config q(3);
+    ASSERT_TRUE(l >> q[0] >> q[1] >> q[2]) << line;
+    EXPECT_EQ(q, p.waypoints[lines]);
+  }
+  EXPECT_EQ(lines, p.waypoints.size());
+  auto two = runMms("export " + quote(test::scenario("two-robots/niche-swap.json")) + " " +
+                    quote(test::scenario("two-robots/niche-swap.path.json")) +
+                    " --to ompl-path -o " + quote(dir.path("x.path")));
+  EXPECT_EQ(two.code, 2) << "one rigid robot only";
+}
+
+// Headless Chromium screenshots of the viewer.
+struct Rgb {
+  int r, g, b;
+};
+
+std::vector<Rgb> readPng(const std::string& file, int& w, int& h) {
+  png_image img{};
+  img.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&img, file.c_str())) return {};
+  img.format = PNG_FORMAT_RGB;
+  std::vector<unsigned char> buf(PNG_IMAGE_SIZE(img));
+  if (!png_image_finish_read(&img, nullptr, buf.data(), 0, nullptr)) return {};
+  w = int(img.width), h = int(img.height);
+  std::vector<Rgb> px(size_t(w) * size_t(h));
+  for (size_t i = 0; i < px.size(); ++i) px[i] = {buf[3 * i], buf[3 * i + 1], buf[3 * i + 2]};
+  return px;
+}
+
+TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {
+  const auto chromium = test::runCommand("command -v chromium");
+  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  TempDir dir;
+  // A square robot translating from left to right across an empty room, then turning.
+  Scene s;
+  s.name = "viewer test";
+  s.bounds = {0, 0, 20, 10};
+  s.obstacles.push_back({{9, 8}, {11, 8}, {11, 10}, {9, 10}});
+  Robot r;
+  r.name = "box";
+  r.shape = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  r.start = {3, 3, 0};
+  r.goal = {17, 3, 0};
+  s.robots.push_back(r);
+  const std::string sceneFile = dir.path("s.json");
+  saveScene(s, sceneFile);
+  Path p;
+  p.waypoints = {{3, 3, 0}, {17, 3, 0}};
+  const std::string pathFile = dir.path("p.json");
+  savePath(p, s, pathFile);
+  const std::string html = dir.path("v.html");
+  auto v = runMms("view " + quote(sceneFile) + " " + quote(pathFile) + " -o " + quote(html));
+  ASSERT_EQ(v.code, 0) << v.err;
+  const std::string page = test::readFile(html);
+  for (const char* external : {"http://", "https://", " src=", " href=", "import("})
+    EXPECT_EQ(page.find(external), std::string::npos)
+        << "the page must be self-contained: " << external;
+
+  auto shot = [&](double t, const std::string& png) {
+    const std::string cmd =
+        "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
+        "--force-device-scale-factor=1 --window-size=820,500 "
+        "--virtual-time-budget=3000 --user-data-dir=" +
+        quote(dir.path("profile")) + " --screenshot=" + quote(png) + " " +
+        quote("file://" + html + "#t=" + std::to_string(t));
+    auto c = test::runCommand(cmd);
+    ASSERT_EQ(c.code, 0) << c.err;
+  };
+  const Rgb robot{0xe8, 0x71, 0x0a};
+  auto isRobot = [&](const std::vector<Rgb>& px, int w, Vec2 at) {
+    const Rgb c = px[size_t(std::lround(at.y)) * size_t(w) + size_t(std::lround(at.x))];
+    return std::abs(c.r - robot.r) < 24 && std::abs(c.g - robot.g) < 24 &&
+           std::abs(c.b - robot.b) < 24;
+  };
+  for (double t : {0.0, 0.5, 1.0}) {
+    const std::string png = dir.path("shot.png");
+    shot(t, png);
+    int w = 0, h = 0;
+    const auto px = readPng(png, w, h);
+    ASSERT_FALSE(px.empty()) << "unreadable screenshot";
+    const Vec2 expected = viewerPixel(s, {3 + 14 * t, 3});
+    ASSERT_LT(expected.y, h);
+    EXPECT_TRUE(isRobot(px, w, expected)) << "robot at t = " << t;
+    // Where it is not: 4 units left and right of it, unless that is where it is.
+    for (double dx : {-4.0, 4.0}) {
+      const double x = 3 + 14 * t + dx;
+      if (x > 0 && x < 20) {
+        EXPECT_FALSE(isRobot(px, w, viewerPixel(s, {x, 3}))) << t << dx;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mms
