@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds mms, and runs the demo: plan the paper's Pacman scenario (a
 # C-shaped robot must swallow a square, turn around it and release it so the two can swap ends
-# of a corridor), certify the motion, and draw it as an animated SVG (demo.svg).
+# of a corridor), certify the motion, and draw it as an animated SVG (demo.svg) and an HTML
+# player (demo.html).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -13,4 +14,5 @@ scene=scenarios/two-robots/pacman-0.5.json
 build/mms validate "$scene"
 build/mms plan "$scene" --seed 1 -o demo-path.json --svg demo.svg
 build/mms check "$scene" demo-path.json
-echo "demo: open demo.svg in a browser to watch the Pacman swallow the square and the two swap places"
+build/mms view "$scene" demo-path.json -o demo.html
+echo "demo: open demo.html (player: play/pause, slider, speed) or demo.svg in a browser to watch the Pacman swallow the square and the two swap places"

@@ -200,6 +200,10 @@ void printTwoRobotStats(const TwoRobotStats& s) {
 }
 
 int planTwo(const PlanArgs& a, const Scene& scene) {
+  if (a.saveRoadmap)
+    throw InputError(a.scene +
+                     ": (--save-roadmap): one-robot scenes only (a two-robot roadmap "
+                     "lives in subspaces of a 6-D space)");
   if (!a.queries.empty())
     throw InputError(a.queries + ": (file): --queries is for one-robot scenes; " + a.scene +
                      " has two robots");
