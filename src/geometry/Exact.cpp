@@ -120,26 +120,17 @@ std::vector<PolygonWithHoles> unionOfTriangles(const std::vector<std::array<Vec2
       hole.reverse_orientation();  // counter-clockwise, like every ring of a scene
       r.holes.push_back(roundedWithoutCollinear(hole));
     }
+    if (pwh.has_holes()) {
+      // Decomposed here, from the exact union as CGAL produced it (valid input for it).
+      std::vector<Polygon> pieces;
+      CGAL::Polygon_vertical_decomposition_2<Kernel> decompose;
+      decompose(pwh, std::back_inserter(pieces));
+      for (Polygon& p : pieces) {
+        if (p.is_clockwise_oriented()) p.reverse_orientation();
+        r.convexPieces.push_back(roundedWithoutCollinear(p));
+      }
+    }
     out.push_back(std::move(r));
-  }
-  return out;
-}
-
-std::vector<Ring> decomposeHoles(const PolygonWithHoles& polygon) {
-  PolygonWithHolesE pwh(toExact(polygon.outer));
-  for (const Ring& h : polygon.holes) {
-    Polygon hole = toExact(h);
-    if (hole.orientation() == CGAL::COUNTERCLOCKWISE) hole.reverse_orientation();
-    pwh.add_hole(hole);
-  }
-  std::vector<Polygon> pieces;
-  CGAL::Polygon_vertical_decomposition_2<Kernel> decompose;
-  decompose(pwh, std::back_inserter(pieces));
-  std::vector<Ring> out;
-  for (const Polygon& p : pieces) {
-    Polygon q = p;
-    if (q.orientation() == CGAL::CLOCKWISE) q.reverse_orientation();
-    out.push_back(roundedWithoutCollinear(q));
   }
   return out;
 }

@@ -44,10 +44,14 @@ Polygon rotated(const Polygon& poly, const RationalAngle& angle);
 /// the floating-point collision checker.
 bool interiorsIntersect(const Ring& a, const Ring& b);
 
-/// A polygon with holes in doubles (import only: scenes hold simple polygons).
+/// A polygon with holes in doubles (import only: scenes hold simple polygons). The outer
+/// boundary may touch itself at vertices (as CGAL's unions do).
 struct PolygonWithHoles {
   Ring outer;
   std::vector<Ring> holes;
+  /// When there are holes: simple convex polygons with disjoint interiors whose union is the
+  /// polygon (CGAL's vertical decomposition of the exact union).
+  std::vector<Ring> convexPieces;
 };
 
 /// The union of triangles, computed exactly (CGAL's aggregated join) from the doubles taken as
@@ -56,10 +60,6 @@ struct PolygonWithHoles {
 /// `degenerate`.
 std::vector<PolygonWithHoles> unionOfTriangles(const std::vector<std::array<Vec2, 3>>& triangles,
                                                size_t& degenerate);
-
-/// Simple polygons whose union is the polygon with holes and whose interiors are disjoint
-/// (CGAL's vertical decomposition, convex pieces), for scenes that hold simple polygons only.
-std::vector<Ring> decomposeHoles(const PolygonWithHoles& polygon);
 
 /// The convex hull of the points (exact predicates), counter-clockwise.
 Ring convexHull(const std::vector<Vec2>& points);

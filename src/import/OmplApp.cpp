@@ -151,7 +151,7 @@ Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes) {
       continue;
     }
     split += 1;
-    for (const Ring& piece : exact::decomposeHoles(p)) splitPinched(piece, scene.obstacles);
+    for (const Ring& piece : p.convexPieces) splitPinched(piece, scene.obstacles);
   }
   if (split)
     notes.warnings.push_back(std::to_string(split) +
