@@ -6,24 +6,11 @@
 #include <limits>
 #include <sstream>
 
+#include "util/Markup.h"
+
 namespace mms::lab {
 
 namespace {
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else
-      out += c;
-  }
-  return out;
-}
 
 std::string tickLabel(double v) {
   std::ostringstream o;
@@ -94,7 +81,7 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
       << spec.width << " " << spec.height << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<text x=\"" << spec.width / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">"
-      << escape(spec.title) << "</text>\n";
+      << escapeMarkup(spec.title) << "</text>\n";
   for (double t : ticks(x0, x1, spec.logX)) {
     svg << "<line x1=\"" << fx(t) << "\" y1=\"" << top << "\" x2=\"" << fx(t) << "\" y2=\""
         << top + ph << "\" stroke=\"#eee\"/>\n<text x=\"" << fx(t) << "\" y=\"" << top + ph + 16
@@ -108,9 +95,9 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
   svg << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
       << "\" fill=\"none\" stroke=\"#444\"/>\n"
       << "<text x=\"" << left + pw / 2 << "\" y=\"" << spec.height - 12
-      << "\" text-anchor=\"middle\">" << escape(spec.xLabel) << "</text>\n"
+      << "\" text-anchor=\"middle\">" << escapeMarkup(spec.xLabel) << "</text>\n"
       << "<text transform=\"translate(16," << top + ph / 2
-      << ") rotate(-90)\" text-anchor=\"middle\">" << escape(spec.yLabel) << "</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\">" << escapeMarkup(spec.yLabel) << "</text>\n";
   size_t legendRow = 0;
   for (size_t i = 0; i < series.size(); ++i) {
     const Series& s = series[i];
@@ -130,7 +117,7 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
     svg << "<line x1=\"" << left + pw + 12 << "\" y1=\"" << ly << "\" x2=\"" << left + pw + 34
         << "\" y2=\"" << ly << "\" stroke=\"" << s.colour << "\" stroke-width=\"2\""
         << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << "/>\n<text x=\"" << left + pw + 40
-        << "\" y=\"" << ly + 4 << "\">" << escape(s.name) << "</text>\n";
+        << "\" y=\"" << ly + 4 << "\">" << escapeMarkup(s.name) << "</text>\n";
   }
   svg << "</svg>\n";
   return svg.str();

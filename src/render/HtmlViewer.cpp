@@ -1,5 +1,7 @@
 #include "render/HtmlViewer.h"
 
+#include "util/Markup.h"
+
 namespace mms {
 
 namespace {
@@ -117,23 +119,6 @@ window.addEventListener('hashchange', fromHash);
 fromHash();
 )JS";
 
-std::string escapeHtml(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out += c;
-  }
-  return out;
-}
-
 nlohmann::json ringJson(const Ring& r) {
   nlohmann::json a = nlohmann::json::array();
   for (Vec2 v : r) a.push_back({v.x, v.y});
@@ -174,7 +159,7 @@ std::string renderHtmlViewer(const Scene& scene, const Path* path) {
   const std::string title = scene.name.empty() ? "mms scene" : scene.name;
   std::string html;
   html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>";
-  html += escapeHtml(title) + " - mms view</title>\n";
+  html += escapeMarkup(title) + " - mms view</title>\n";
   html +=
       "<style>body{margin:0;font:13px sans-serif;color:#222}canvas{display:block}"
       "#controls{padding:8px 10px;display:flex;gap:12px;align-items:center;flex-wrap:wrap}"
@@ -188,7 +173,7 @@ std::string renderHtmlViewer(const Scene& scene, const Path* path) {
       "<label><input id=\"traces\" type=\"checkbox\" checked> traces</label>"
       "<label><input id=\"roadmap\" type=\"checkbox\"> free-space cells and lines</label>"
       "</div>\n<p style=\"padding:0 10px\">";
-  html += escapeHtml(title) +
+  html += escapeMarkup(title) +
           ": obstacles blue, robots green at the start and red at the goal (outlines). "
           "Link to a moment with #t=0.5.</p>\n";
   html += "<script id=\"mms-data\" type=\"application/json\">" + data + "</script>\n";

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "geometry/PolygonOps.h"
+#include "util/Markup.h"
 
 namespace mms {
 namespace {
@@ -14,29 +15,6 @@ std::string fmt(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.9g", v);
   return buf;
-}
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
 }
 
 std::string points(const Ring& ring) {
@@ -91,7 +69,8 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   if (!scene.name.empty())
     svg << "<text x=\"" << fmt(margin) << "\" y=\"" << fmt(margin + 8)
-        << "\" font-family=\"sans-serif\" font-size=\"16\">" << escape(scene.name) << "</text>\n";
+        << "\" font-family=\"sans-serif\" font-size=\"16\">" << escapeMarkup(scene.name)
+        << "</text>\n";
   // World coordinates: y up, as in the scene file.
   svg << "<g transform=\"translate(" << fmt(margin) << " " << fmt(heightPx - margin) << ") scale("
       << fmt(scale) << " " << fmt(-scale) << ") translate(" << fmt(-b.xmin) << " " << fmt(-b.ymin)
