@@ -352,11 +352,8 @@ int plan(const PlanArgs& a) {
       for (const ConnectivityGraph::Node& n : res.cells)
         if (n.kind == ConnectivityGraph::Kind::SliceCell) {
           nlohmann::json rings = nlohmann::json::array();
-          for (const Ring& r : planner.slices()[n.manifold].cell(n.cell)) {
-            nlohmann::json ring = nlohmann::json::array();
-            for (Vec2 v : r) ring.push_back({v.x, v.y});
-            rings.push_back(ring);
-          }
+          for (const Ring& r : planner.slices()[n.manifold].cell(n.cell))
+            rings.push_back(ringToJson(r));
           cells.push_back(rings);
         }
       for (const Line& l : planner.lines()) points.push_back({l.point().x, l.point().y});

@@ -8,23 +8,13 @@
 
 namespace mms {
 
-SceneFormat detectSceneFormat(const std::string& file) {
-  if (std::filesystem::path(file).extension() == ".cfg") return SceneFormat::OmplApp;
-  if (std::filesystem::path(file).extension() == ".json" && looksLikeDiscopygal(file))
-    return SceneFormat::Discopygal;
-  return SceneFormat::Mms;
-}
-
 Scene loadAnyScene(const std::string& file, ImportNotes& notes) {
-  switch (detectSceneFormat(file)) {
-    case SceneFormat::OmplApp:
-      return importOmplApp(file, notes);
-    case SceneFormat::Discopygal:
-      return importDiscopygal(file, notes);
-    case SceneFormat::Mms:
-      break;
-  }
-  return loadScene(file);
+  const std::filesystem::path ext = std::filesystem::path(file).extension();
+  if (ext == ".cfg") return importOmplApp(file, notes);
+  // Parsed once, whichever format it turns out to be.
+  const json_in::Json doc = json_in::parseFile(file);
+  if (ext == ".json" && isDiscopygal(doc)) return importDiscopygal(doc, file, notes);
+  return parseScene(doc, file);
 }
 
 }  // namespace mms

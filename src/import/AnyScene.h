@@ -8,12 +8,8 @@
 
 namespace mms {
 
-enum class SceneFormat { Mms, OmplApp, Discopygal };
-
-/// By extension (.cfg) and, for JSON, by content (discopygal's "obstacles"/"robots" with
-/// "__class__" entries).
-SceneFormat detectSceneFormat(const std::string& file);
-
+/// By extension (.cfg: OMPL.app) and, for .json, by content (discopygal's "__class__" entries
+/// and no "format"); anything else is read as mms-scene/1.
 Scene loadAnyScene(const std::string& file, ImportNotes& notes);
 
 }  // namespace mms

@@ -39,6 +39,16 @@ std::vector<double> numbers(const std::string& file, const char* what, const cha
   return v;
 }
 
+// A transform element's numbers, exactly `count` of them.
+std::vector<double> fixedNumbers(const std::string& file, const pugi::xml_node& element,
+                                 size_t count) {
+  const std::string tag = std::string("<") + element.name() + ">";
+  std::vector<double> v = numbers(file, tag.c_str(), element.child_value());
+  if (v.size() != count)
+    throw InputError(file + ": " + tag + ": expected " + std::to_string(count) + " numbers");
+  return v;
+}
+
 class Reader {
  public:
   Reader(std::string file, const pugi::xml_document& doc) : file_(std::move(file)) {
@@ -140,27 +150,22 @@ void walk(const Reader& r, const pugi::xml_node& node, const Matrix& parent, Col
   Matrix m = parent;
   for (pugi::xml_node c : node.children()) {
     std::string name = c.name();
+    Matrix local = identity();
     if (name == "matrix") {
-      std::vector<double> v = numbers(file, "<matrix>", c.child_value());
-      if (v.size() != 16) throw InputError(file + ": <matrix>: expected 16 numbers");
-      Matrix local;
+      std::vector<double> v = fixedNumbers(file, c, 16);
       std::copy(v.begin(), v.end(), local.begin());
-      m = multiply(m, local);
     } else if (name == "translate") {
-      std::vector<double> v = numbers(file, "<translate>", c.child_value());
-      if (v.size() != 3) throw InputError(file + ": <translate>: expected 3 numbers");
-      Matrix t = identity();
-      t[3] = v[0], t[7] = v[1], t[11] = v[2];
-      m = multiply(m, t);
+      std::vector<double> v = fixedNumbers(file, c, 3);
+      local[3] = v[0], local[7] = v[1], local[11] = v[2];
     } else if (name == "scale") {
-      std::vector<double> v = numbers(file, "<scale>", c.child_value());
-      if (v.size() != 3) throw InputError(file + ": <scale>: expected 3 numbers");
-      Matrix s = identity();
-      s[0] = v[0], s[5] = v[1], s[10] = v[2];
-      m = multiply(m, s);
+      std::vector<double> v = fixedNumbers(file, c, 3);
+      local[0] = v[0], local[5] = v[1], local[10] = v[2];
     } else if (name == "rotate") {
       throw InputError(file + ": <rotate>: not supported (use <matrix>)");
+    } else {
+      continue;
     }
+    m = multiply(m, local);
   }
   for (pugi::xml_node c : node.children()) {
     std::string name = c.name();

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 #include "scene/Json.h"
 #include "scene/SceneIO.h"
@@ -46,18 +45,21 @@ double positive(const Node& n) {
 
 }  // namespace
 
-bool looksLikeDiscopygal(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) return false;
-  std::string head(4096, '\0');
-  in.read(head.data(), std::streamsize(head.size()));
-  head.resize(size_t(in.gcount()));
-  return head.find("\"__class__\"") != std::string::npos &&
-         head.find("\"format\"") == std::string::npos;
+bool isDiscopygal(const nlohmann::json& doc) {
+  if (!doc.is_object() || doc.contains("format")) return false;
+  if (doc.contains("__class__")) return true;
+  for (const char* key : {"obstacles", "robots"})
+    if (doc.contains(key) && doc[key].is_array())
+      for (const auto& e : doc[key])
+        if (e.is_object() && e.contains("__class__")) return true;
+  return false;
 }
 
 Scene importDiscopygal(const std::string& file, ImportNotes& notes) {
-  const json_in::Json doc = json_in::parseFile(file);
+  return importDiscopygal(json_in::parseFile(file), file, notes);
+}
+
+Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, ImportNotes& notes) {
   const Node root(doc, file, "(root)");
   root.requireObject();
   if (root.has("__class__") && root["__class__"].string() != "Scene")
@@ -135,10 +137,8 @@ Scene importDiscopygal(const std::string& file, ImportNotes& notes) {
   for (const Ring& o : scene.obstacles)
     for (Vec2 v : o) grow(v);
   for (const Robot& r : scene.robots)
-    for (const Pose& p : {r.start, r.goal}) {
-      const double c = std::cos(p.theta), s = std::sin(p.theta);
-      for (Vec2 v : r.shape) grow({p.x + c * v.x - s * v.y, p.y + s * v.x + c * v.y});
-    }
+    for (const Pose& p : {r.start, r.goal})
+      for (Vec2 v : placedRing(r.shape, p)) grow(v);
   const double margin = 0.05 * std::max(b.xmax - b.xmin, b.ymax - b.ymin);
   scene.bounds = {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
   notes.warnings.push_back(
@@ -149,15 +149,10 @@ Scene importDiscopygal(const std::string& file, ImportNotes& notes) {
 
 std::string discopygalJson(const Scene& scene, ImportNotes& notes) {
   using nlohmann::json;
-  auto points = [](const Ring& r) {
-    json a = json::array();
-    for (Vec2 v : r) a.push_back({v.x, v.y});
-    return a;
-  };
   json obstacles = json::array();
   for (const Ring& o : scene.obstacles)
     obstacles.push_back(
-        {{"__class__", "ObstaclePolygon"}, {"poly", points(o)}, {"data", json::object()}});
+        {{"__class__", "ObstaclePolygon"}, {"poly", ringToJson(o)}, {"data", json::object()}});
   // The bounds as four walls, 5 % of the scene's size thick, overlapping at the corners.
   const Box& b = scene.bounds;
   const double t = 0.05 * std::max(b.width(), b.height());
@@ -167,21 +162,21 @@ std::string discopygalJson(const Scene& scene, ImportNotes& notes) {
         Box{b.xmax, b.ymin, b.xmax + t, b.ymax}})
     obstacles.push_back(
         {{"__class__", "ObstaclePolygon"},
-         {"poly", points({{w.xmin, w.ymin}, {w.xmax, w.ymin}, {w.xmax, w.ymax}, {w.xmin, w.ymax}})},
+         {"poly",
+          ringToJson({{w.xmin, w.ymin}, {w.xmax, w.ymin}, {w.xmax, w.ymax}, {w.xmin, w.ymax}})},
          {"data", {{"name", "bounds"}}}});
   notes.warnings.push_back("bounds written as four walls (discopygal scenes have none)");
   json robots = json::array();
   for (const Robot& r : scene.robots) {
     Ring shape = r.shape;
     if (r.motion == Motion::Rigid) {
-      const double c = std::cos(r.start.theta), s = std::sin(r.start.theta);
-      for (Vec2& v : shape) v = {c * v.x - s * v.y, s * v.x + c * v.y};
+      shape = placedRing(r.shape, {0, 0, r.start.theta});
       notes.warnings.push_back(r.name +
                                ": rotating robot written as a translating RobotPolygon at its "
                                "start angle (discopygal's polygon robots do not rotate)");
     }
     robots.push_back({{"__class__", "RobotPolygon"},
-                      {"poly", points(shape)},
+                      {"poly", ringToJson(shape)},
                       {"start", {r.start.x, r.start.y}},
                       {"end", {r.goal.x, r.goal.y}},
                       {"data", {{"name", r.name}}}});

@@ -6,6 +6,21 @@
 
 namespace mms::lab {
 
+namespace {
+
+// Steps a grid index through the box [lo, hi) (first axis fastest, as flat indices run);
+// false once it has wrapped around.
+bool nextIndex(std::vector<size_t>& idx, const std::vector<size_t>& lo,
+               const std::vector<size_t>& hi) {
+  for (size_t j = 0; j < idx.size(); ++j) {
+    if (++idx[j] < hi[j]) return true;
+    idx[j] = lo[j];
+  }
+  return false;
+}
+
+}  // namespace
+
 bool AxisSubspace::fixes(int axis) const {
   return !std::binary_search(freeAxes.begin(), freeAxes.end(), axis);
 }
@@ -60,7 +75,8 @@ SubspaceCells::SubspaceCells(const BoxSpace& space, AxisSubspace subspace, size_
 
   // Block the cells inside each box: a box covers a contiguous index range per axis.
   std::vector<char> blocked(cells, 0);
-  std::vector<size_t> lo(k), hi(k), idx(k);
+  std::vector<size_t> lo(k), hi(k), idx(k), zero(k, 0), count(k);
+  for (size_t j = 0; j < k; ++j) count[j] = breaks_[j].size() - 1;
   for (const Box* b : meeting) {
     for (size_t j = 0; j < k; ++j) {
       const std::vector<double>& br = breaks_[j];
@@ -77,14 +93,11 @@ SubspaceCells::SubspaceCells(const BoxSpace& space, AxisSubspace subspace, size_
     for (size_t j = 0; j < k; ++j) empty = empty || lo[j] >= hi[j];
     if (empty) continue;
     idx = lo;
-    for (;;) {
+    do {
       size_t flat = 0;
       for (size_t j = 0; j < k; ++j) flat += idx[j] * stride_[j];
       blocked[flat] = 1;
-      size_t j = 0;
-      while (j < k && ++idx[j] == hi[j]) idx[j] = lo[j], ++j;
-      if (j == k) break;
-    }
+    } while (nextIndex(idx, lo, hi));
   }
 
   // Free cells sharing a face are one FSC.
@@ -96,10 +109,7 @@ SubspaceCells::SubspaceCells(const BoxSpace& space, AxisSubspace subspace, size_
     if (!blocked[c])
       for (size_t j = 0; j < k; ++j)
         if (idx[j] > 0 && !blocked[c - stride_[j]]) sets.union_set(c, c - stride_[j]);
-    for (size_t j = 0; j < k; ++j) {
-      if (++idx[j] < breaks_[j].size() - 1) break;
-      idx[j] = 0;
-    }
+    nextIndex(idx, zero, count);
   }
   labels_.assign(cells, -1);
   std::vector<int32_t> labelOfRoot(cells, -1);
@@ -116,10 +126,7 @@ SubspaceCells::SubspaceCells(const BoxSpace& space, AxisSubspace subspace, size_
       }
       labels_[c] = labelOfRoot[root];
     }
-    for (size_t j = 0; j < k; ++j) {
-      if (++idx[j] < breaks_[j].size() - 1) break;
-      idx[j] = 0;
-    }
+    nextIndex(idx, zero, count);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "render/HtmlViewer.h"
 
+#include "scene/SceneIO.h"
 #include "util/Markup.h"
 
 namespace mms {
@@ -119,14 +120,6 @@ window.addEventListener('hashchange', fromHash);
 fromHash();
 )JS";
 
-nlohmann::json ringJson(const Ring& r) {
-  nlohmann::json a = nlohmann::json::array();
-  for (Vec2 v : r) a.push_back({v.x, v.y});
-  return a;
-}
-
-nlohmann::json poseJson(const Pose& p) { return {p.x, p.y, p.theta}; }
-
 }  // namespace
 
 Vec2 viewerPixel(const Scene& scene, Vec2 p) {
@@ -136,18 +129,10 @@ Vec2 viewerPixel(const Scene& scene, Vec2 p) {
 }
 
 std::string renderHtmlViewer(const Scene& scene, const Path* path) {
-  nlohmann::json d;
+  // The scene as its file holds it (bounds, obstacles, robots' shape, start and goal).
+  nlohmann::json d = sceneToJson(scene);
   d["canvasWidth"] = kViewerCanvasWidth;
   d["pad"] = kViewerPad;
-  d["bounds"] = {scene.bounds.xmin, scene.bounds.ymin, scene.bounds.xmax, scene.bounds.ymax};
-  d["obstacles"] = nlohmann::json::array();
-  for (const Ring& o : scene.obstacles) d["obstacles"].push_back(ringJson(o));
-  d["robots"] = nlohmann::json::array();
-  for (const Robot& r : scene.robots)
-    d["robots"].push_back({{"name", r.name},
-                           {"shape", ringJson(r.shape)},
-                           {"start", poseJson(r.start)},
-                           {"goal", poseJson(r.goal)}});
   if (path) {
     d["waypoints"] = path->waypoints;
     if (path->extra.contains("roadmap")) d["roadmap"] = path->extra["roadmap"];

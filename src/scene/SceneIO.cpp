@@ -144,22 +144,23 @@ Scene parseScene(const nlohmann::json& doc, const std::string& source) {
 
 Scene loadScene(const std::string& file) { return parseScene(json_in::parseFile(file), file); }
 
+nlohmann::json ringToJson(const Ring& ring) {
+  nlohmann::json a = nlohmann::json::array();
+  for (Vec2 v : ring) a.push_back({v.x, v.y});
+  return a;
+}
+
 nlohmann::json sceneToJson(const Scene& scene) {
-  auto ring = [](const Ring& r) {
-    nlohmann::json a = nlohmann::json::array();
-    for (Vec2 v : r) a.push_back({v.x, v.y});
-    return a;
-  };
   nlohmann::json j;
   j["format"] = kSceneFormat;
   if (!scene.name.empty()) j["name"] = scene.name;
   j["bounds"] = {scene.bounds.xmin, scene.bounds.ymin, scene.bounds.xmax, scene.bounds.ymax};
   j["obstacles"] = nlohmann::json::array();
-  for (const Ring& o : scene.obstacles) j["obstacles"].push_back(ring(o));
+  for (const Ring& o : scene.obstacles) j["obstacles"].push_back(ringToJson(o));
   j["robots"] = nlohmann::json::array();
   for (const Robot& r : scene.robots)
     j["robots"].push_back({{"name", r.name},
-                           {"shape", ring(r.shape)},
+                           {"shape", ringToJson(r.shape)},
                            {"start", {r.start.x, r.start.y, r.start.theta}},
                            {"goal", {r.goal.x, r.goal.y, r.goal.theta}},
                            {"motion", r.motion == Motion::Rigid ? "rigid" : "translate"}});

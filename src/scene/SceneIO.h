@@ -17,6 +17,8 @@ Scene loadScene(const std::string& file);
 Scene parseScene(const nlohmann::json& doc, const std::string& source);
 
 nlohmann::json sceneToJson(const Scene& scene);
+/// [[x, y], ...], as scene files write polygons.
+nlohmann::json ringToJson(const Ring& ring);
 /// Writes the scene atomically (no partial file on failure).
 void saveScene(const Scene& scene, const std::string& file);
 
