@@ -219,6 +219,17 @@ TEST(Import, DiscopygalScenesConvertConservatively) {
   EXPECT_EQ(xmin, 0);
   EXPECT_EQ(xmax, 2);
 
+  // The command writes the same document as the library, and refuses a path.
+  const std::string viaCli = dir.path("cli.json");
+  auto ex = runMms("export " + quote(file) + " --to discopygal -q -o " + quote(viaCli));
+  ASSERT_EQ(ex.code, 0) << ex.err;
+  ImportNotes cliNotes;
+  EXPECT_EQ(test::readFile(viaCli), discopygalJson(s, cliNotes));
+  auto withPath = runMms("export " + quote(file) + " " + quote(file) + " --to discopygal -o " +
+                         quote(dir.path("never.json")));
+  EXPECT_EQ(withPath.code, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir.path("never.json")));
+
   // Export and import again: the obstacles (and four walls for the bounds) and the robots'
   // ends survive.
   ImportNotes exportNotes;
@@ -294,6 +305,31 @@ std::vector<Rgb> readPng(const std::string& file, int& w, int& h) {
   std::vector<Rgb> px(size_t(w) * size_t(h));
   for (size_t i = 0; i < px.size(); ++i) px[i] = {buf[3 * i], buf[3 * i + 1], buf[3 * i + 2]};
   return px;
+}
+
+TEST(View, SavedRoadmapReachesThePathFileAndThePage) {
+  TempDir dir;
+  const std::string scene = test::scenario("one-robot/bar-slot.json");
+  const std::string path = dir.path("p.json"), html = dir.path("v.html");
+  auto plan = runMms("plan " + quote(scene) + " -q --save-roadmap -o " + quote(path));
+  ASSERT_EQ(plan.code, 0) << plan.err;
+  const nlohmann::json saved = nlohmann::json::parse(test::readFile(path));
+  ASSERT_TRUE(saved.contains("roadmap"));
+  EXPECT_GT(saved["roadmap"]["cells"].size(), 0u);
+  EXPECT_GT(saved["roadmap"]["points"].size(), 0u);
+  // Every cell ring is a polygon of [x, y] points.
+  for (const auto& cell : saved["roadmap"]["cells"])
+    for (const auto& ring : cell) {
+      EXPECT_GE(ring.size(), 3u);
+      for (const auto& p : ring) EXPECT_EQ(p.size(), 2u);
+    }
+  ASSERT_EQ(runMms("view " + quote(scene) + " " + quote(path) + " -o " + quote(html)).code, 0);
+  EXPECT_NE(test::readFile(html).find("\"roadmap\":{\"cells\""), std::string::npos);
+  auto two = runMms("plan " + quote(test::scenario("two-robots/niche-swap.json")) +
+                    " -q --save-roadmap -o " + quote(dir.path("two.json")));
+  EXPECT_EQ(two.code, 2) << "one-robot scenes only";
+  EXPECT_NE(two.err.find("--save-roadmap"), std::string::npos) << two.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path("two.json")));
 }
 
 TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {

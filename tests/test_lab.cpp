@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <queue>
 
@@ -236,6 +237,14 @@ TEST(Lab, CommandWritesEveryPlotAndRejectsBadInput) {
   auto one = test::runMms("lab completeness --quick -q --threads 1 -o " + test::quote(out));
   ASSERT_EQ(one.code, 0);
   EXPECT_EQ(test::readFile(out + "/completeness.csv"), csv);
+
+  // --no-pacman leaves the two-robot proxy out.
+  const std::string noPacman = dir.path("no-pacman");
+  auto np = test::runMms("lab passages --quick -q --no-pacman -o " + test::quote(noPacman));
+  ASSERT_EQ(np.code, 0) << np.err;
+  EXPECT_FALSE(std::filesystem::exists(noPacman + "/passages-pacman.svg"));
+  EXPECT_EQ(test::readFile(noPacman + "/passages.md").find("Pacman"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(noPacman + "/passages-kclearance.svg"));
 
   auto bad = test::runMms("lab nonsense");
   EXPECT_EQ(bad.code, 2);
