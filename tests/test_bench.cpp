@@ -2,7 +2,9 @@
 // shards and merging, limits.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "Support.h"
 #include "bench/Report.h"
@@ -143,6 +145,61 @@ TEST(BenchCommand, RecordsRunsResumesShardsAndMerges) {
              quote(dir.path("m")));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(lines(readFile(dir.path("m/runs.jsonl"))), 4u);
+}
+
+TEST(BenchCommand, StopDecidedRecordsTheSeedsItSkips) {
+  TempDir dir;
+  // No path exists in the sealed ring: every run fails, so after 2 of 4 failures (seeds 1 and 2,
+  // one run at a time) PRM's median is decided and seeds 3 and 4 are not run.
+  const std::string cmd = "bench " + quote(scenario("one-robot/sealed-ring.json")) +
+                          " --planners prm --runs 4 --time-limit 0.3 --stop-decided -o " +
+                          quote(dir.path("b"));
+  Outcome r = runMms(cmd);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 not run"), std::string::npos) << r.out;
+  std::map<uint64_t, std::string> status;
+  std::istringstream in(readFile(dir.path("b/runs.jsonl")));
+  for (std::string line; std::getline(in, line);) {
+    const nlohmann::json j = nlohmann::json::parse(line);
+    status[j["seed"].get<uint64_t>()] = j["status"];
+  }
+  const std::map<uint64_t, std::string> expected{
+      {1, "not_found"}, {2, "not_found"}, {3, "not_run"}, {4, "not_run"}};
+  EXPECT_EQ(status, expected);
+  EXPECT_NE(readFile(dir.path("b/report.md")).find("0/4 (2 not run: median decided)"),
+            std::string::npos);
+  // The OMPL log holds only the runs that ran.
+  EXPECT_NE(readFile(dir.path("b/ompl/sealed-ring.log")).find("\n2 runs\n"), std::string::npos);
+  r = runMms(cmd);  // resumed: nothing left
+  EXPECT_NE(r.out.find("0 runs (4 already recorded)"), std::string::npos) << r.out;
+}
+
+TEST(BenchCommand, ARunWithTwoThreadsHasTheCoresToItself) {
+  TempDir dir;
+  const Outcome r =
+      runMms("bench " + quote(scenario("translating/cup.json")) + " " +
+             quote(scenario("one-robot/bar-slot.json")) +
+             " --planners mms,rrtconnect --param \"mms=--threads 2\" --runs 3 --time-limit 10 "
+             "--jobs 2 -o " +
+             quote(dir.path("b")));
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<RunRecord> runs = readRuns(dir.path("b/runs.jsonl"));
+  ASSERT_EQ(runs.size(), 12u);
+  size_t twoThreads = 0;
+  for (const RunRecord& a : runs) {
+    EXPECT_EQ(a.cores, a.planner == "mms" ? 2u : 1u);
+    EXPECT_GT(a.startedAt, 0);
+    if (a.cores < 2) continue;
+    ++twoThreads;
+    for (const RunRecord& b : runs) {
+      if (&a == &b) continue;
+      const bool overlap =
+          a.startedAt < b.startedAt + b.wallSeconds && b.startedAt < a.startedAt + a.wallSeconds;
+      EXPECT_FALSE(overlap) << a.scene << " mms seed " << a.seed << " overlaps " << b.planner
+                            << " seed " << b.seed;
+    }
+  }
+  EXPECT_EQ(twoThreads, 6u);
 }
 
 TEST(BenchCommand, MemoryLimitIsEnforcedAndRecorded) {

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -36,6 +37,7 @@ namespace {
 struct Job {
   RunRecord record;
   std::vector<std::string> args;  // mms plan ...
+  size_t cores = 1;
 };
 
 std::string selfExe() {
@@ -45,8 +47,29 @@ std::string selfExe() {
   return p.string();
 }
 
-std::string key(const RunRecord& r) {
-  return r.scene + "|" + r.planner + "|" + r.parameters + "|" + std::to_string(r.seed);
+std::string group(const RunRecord& r) { return r.scene + "|" + r.planner + "|" + r.parameters; }
+std::string key(const RunRecord& r) { return group(r) + "|" + std::to_string(r.seed); }
+
+// Cores a run keeps busy: its --threads (0: all), so that a two-thread MMS run fills --jobs 2
+// alone instead of sharing the cores with another run and reporting slower times.
+size_t coresOf(const std::vector<std::string>& args, size_t jobs) {
+  size_t cores = 1;
+  for (size_t i = 0; i < args.size(); ++i) {
+    std::string v;
+    if (args[i] == "--threads" && i + 1 < args.size())
+      v = args[i + 1];
+    else if (args[i].rfind("--threads=", 0) == 0)
+      v = args[i].substr(10);
+    else
+      continue;
+    try {
+      const long n = std::stol(v);
+      cores = n <= 0 ? std::thread::hardware_concurrency() : size_t(n);
+    } catch (const std::exception&) {
+      throw InputError("--param: --threads '" + v + "' is not a number");
+    }
+  }
+  return std::clamp<size_t>(cores, 1, jobs);
 }
 
 // Starts `mms plan` for a job; the child gets the memory limit and no terminal output.
@@ -204,6 +227,7 @@ int bench(const BenchArgs& a) {
                   std::to_string(a.timeLimit),
                   "-q"};
         for (const std::string& extra : split(j.record.parameters, ' ')) j.args.push_back(extra);
+        j.cores = j.record.planner == "mms" ? coresOf(j.args, a.jobs) : 1;
         jobs.push_back(std::move(j));
       }
 
@@ -212,8 +236,16 @@ int bench(const BenchArgs& a) {
                                                        std::to_string(a.shardCount) + ".jsonl"
                                                  : "runs.jsonl");
   std::set<std::string> done;
+  std::map<std::string, size_t> failures;  // per scene, planner and parameters
+  auto count = [&](const RunRecord& r) {
+    done.insert(key(r));
+    if (!r.solved()) ++failures[group(r)];
+  };
   if (fs::exists(runsFile))
-    for (const RunRecord& r : readRuns(runsFile)) done.insert(key(r));
+    for (const RunRecord& r : readRuns(runsFile)) count(r);
+  // With --stop-decided, a group's median is decided as unsolved once this many runs failed
+  // (the median of N runs, unsolved ones infinite, is infinite from ceil(N / 2) failures on).
+  const size_t decided = (a.runs + 1) / 2;
   std::ofstream out(runsFile, std::ios::app);
   if (!out) throw InputError(runsFile + ": (output): cannot open for appending");
 
@@ -230,16 +262,33 @@ int bench(const BenchArgs& a) {
     std::string stats;
   };
   std::vector<Running> running;
-  size_t next = 0, finished = 0, skipped = 0;
+  size_t next = 0, finished = 0, skipped = 0, notRun = 0, busy = 0;
   const size_t total = jobs.size();
   const double grace = std::max(5.0, 0.2 * a.timeLimit);
   while ((next < jobs.size() || !running.empty()) && !interrupted()) {
-    while (next < jobs.size() && running.size() < a.jobs) {
+    // Runs start in list order, each when its cores are free.
+    while (next < jobs.size() && busy + jobs[next].cores <= a.jobs) {
       Job job = jobs[next++];
       if (done.count(key(job.record))) {
         ++skipped;
         continue;
       }
+      if (a.stopDecided && failures[group(job.record)] >= decided) {
+        // Recorded, so that reports count it and a resumed benchmark does not run it.
+        RunRecord rec = job.record;
+        rec.status = "not_run";
+        rec.detail = "median decided: " + std::to_string(failures[group(rec)]) + " of " +
+                     std::to_string(a.runs) + " runs failed";
+        out << rec.toJson().dump() << "\n" << std::flush;
+        count(rec);
+        ++notRun;
+        continue;
+      }
+      busy += job.cores;
+      job.record.cores = job.cores;
+      job.record.startedAt =
+          std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+              .count();
       Running r{job, 0, std::chrono::steady_clock::now(),
                 tmp + "/run-" + std::to_string(next) + ".json"};
       fs::remove(r.stats);
@@ -267,6 +316,7 @@ int bench(const BenchArgs& a) {
       if ((WIFEXITED(status) && WEXITSTATUS(status) == 130) ||
           (WIFSIGNALED(status) && WTERMSIG(status) == SIGINT)) {
         childInterrupted = true;
+        busy -= r.job.cores;
         running.erase(running.begin() + long(i));
         reaped = true;
         break;
@@ -285,11 +335,13 @@ int bench(const BenchArgs& a) {
           rec.status = "crashed", rec.detail = "internal error or out of memory";
       }
       out << rec.toJson().dump() << "\n" << std::flush;
+      count(rec);
       ++finished;
-      std::fprintf(stderr, "mms bench: [%zu/%zu] %s %s seed %llu: %s %.3f s\n", finished + skipped,
-                   total, rec.scene.c_str(), rec.planner.c_str(), (unsigned long long)rec.seed,
-                   rec.status.c_str(), rec.seconds);
+      std::fprintf(stderr, "mms bench: [%zu/%zu] %s %s seed %llu: %s %.3f s\n",
+                   finished + skipped + notRun, total, rec.scene.c_str(), rec.planner.c_str(),
+                   (unsigned long long)rec.seed, rec.status.c_str(), rec.seconds);
       fs::remove(r.stats);
+      busy -= r.job.cores;
       running.erase(running.begin() + long(i));
       reaped = true;
       break;
@@ -305,8 +357,9 @@ int bench(const BenchArgs& a) {
   }
   fs::remove_all(tmp);
   writeReports(a.output);
-  std::printf("%s: %zu runs (%zu already recorded); report in %s/report.md\n", a.output.c_str(),
-              finished, skipped, a.output.c_str());
+  std::printf("%s: %zu runs (%zu already recorded", a.output.c_str(), finished, skipped);
+  if (notRun) std::printf(", %zu not run: their median was decided", notRun);
+  std::printf("); report in %s/report.md\n", a.output.c_str());
   return 0;
 }
 

@@ -89,6 +89,7 @@ struct BenchArgs {
   double timeLimit = 60, memoryMb = 4096;
   size_t shardIndex = 1, shardCount = 1, jobs = 1;
   bool reportOnly = false;
+  bool stopDecided = false;  // skip a group's seeds once its median is decided as unsolved
 };
 int bench(const BenchArgs& a);
 int benchMerge(const std::vector<std::string>& dirs, const std::string& output);

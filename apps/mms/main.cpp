@@ -253,9 +253,15 @@ int main(int argc, char** argv) {
           "--shard", shard,
           "K/N: run only the K-th of N disjoint parts of the run list (merge with mms bench-merge)")
       ->capture_default_str();
-  benchCmd->add_option("--jobs", ba.jobs, "Runs at a time (timings are noisier above 1)")
+  benchCmd
+      ->add_option("--jobs", ba.jobs,
+                   "Cores to fill: runs at a time, an mms run with --threads N taking N of them "
+                   "(timings are noisier above 1)")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
+  benchCmd->add_flag("--stop-decided", ba.stopDecided,
+                     "Stop running a planner's seeds on a scene once half of them failed (its "
+                     "median is then decided as unsolved); the rest are recorded as not run");
   benchCmd->add_flag("--report-only", ba.reportOnly,
                      "Only rewrite the reports from the runs recorded in DIR");
 

@@ -23,6 +23,8 @@ nlohmann::json RunRecord::toJson() const {
           {"status", status},
           {"seconds", seconds},
           {"wall_seconds", wallSeconds},
+          {"started_at", startedAt},
+          {"cores", cores},
           {"peak_memory_mb", peakMemoryMb},
           {"time_limit", timeLimit},
           {"memory_limit_mb", memoryLimitMb},
@@ -45,6 +47,8 @@ RunRecord RunRecord::fromJson(const nlohmann::json& j) {
   r.status = j.at("status");
   r.seconds = j.value("seconds", 0.0);
   r.wallSeconds = j.value("wall_seconds", 0.0);
+  r.startedAt = j.value("started_at", 0.0);
+  r.cores = j.value("cores", size_t(1));
   r.peakMemoryMb = j.value("peak_memory_mb", 0.0);
   r.timeLimit = j.value("time_limit", 0.0);
   r.memoryLimitMb = j.value("memory_limit_mb", 0.0);
@@ -109,6 +113,11 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
     std::vector<double> solvedTimes, all, lengths, graphs, built, used;
     for (const RunRecord* r : g) {
       s.uncertified += r->status == "uncertified";
+      if (r->status == "not_run") {
+        ++s.notRun;
+        all.push_back(std::numeric_limits<double>::infinity());
+        continue;
+      }
       s.peakMemoryMb = std::max(s.peakMemoryMb, r->peakMemoryMb);
       graphs.push_back(double(r->graphSize));
       if (r->solved()) {
@@ -157,6 +166,7 @@ std::string markdownReport(const std::vector<Summary>& summaries, const std::str
     md << "| " << s.scene << " | " << s.planner << " | "
        << (s.parameters.empty() ? "defaults" : s.parameters) << " | " << s.solved << "/" << s.runs;
     if (s.uncertified) md << " (" << s.uncertified << " uncertified)";
+    if (s.notRun) md << " (" << s.notRun << " not run: median decided)";
     md << " | ";
     if (s.solved)
       md << fmt("%.3g", s.meanTrimmed) << " ± " << fmt("%.2g", s.stdevTrimmed);
@@ -177,7 +187,8 @@ bool better(const Summary& a, const Summary& b) {
 }
 std::string medianText(const Summary& s) {
   return (s.medianSolved ? fmt("%.3g s", s.median) : "> " + fmt("%g s", s.timeLimit)) + ", " +
-         std::to_string(s.solved) + "/" + std::to_string(s.runs);
+         std::to_string(s.solved) + "/" + std::to_string(s.runs) +
+         (s.notRun ? " (" + std::to_string(s.notRun) + " not run)" : "");
 }
 std::string label(const Summary& s) {
   return s.planner + (s.parameters.empty() ? "" : " (" + s.parameters + ")");
@@ -236,7 +247,7 @@ std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunR
     std::vector<std::pair<std::string, std::vector<const RunRecord*>>> planners;
     double total = 0, limit = 0, memory = 0;
     for (const RunRecord& r : runs) {
-      if (r.scene != scene) continue;
+      if (r.scene != scene || r.status == "not_run") continue;
       const std::string name = r.parameters.empty() ? r.planner : r.planner + " " + r.parameters;
       auto it = std::find_if(planners.begin(), planners.end(),
                              [&](const auto& p) { return p.first == name; });

@@ -15,9 +15,11 @@ struct RunRecord {
   std::string planner;
   std::string parameters;  // as given to mms plan, e.g. "--k 10"
   uint64_t seed = 0;
-  std::string status;      // found, not_found, uncertified, crashed, killed
-  double seconds = 0;      // planning time as the planner measured it
+  std::string status;  // found, not_found, uncertified, crashed, killed, not_run (--stop-decided)
+  double seconds = 0;  // planning time as the planner measured it
   double wallSeconds = 0;  // the whole process
+  double startedAt = 0;    // Unix time the process started (0: unknown)
+  size_t cores = 1;        // cores the scheduler reserved for it
   double peakMemoryMb = 0;
   double timeLimit = 0, memoryLimitMb = 0;
   double translation = 0, rotation = 0;
@@ -36,6 +38,7 @@ struct Summary {
   std::string scene, planner, parameters;
   double tightness = -1, timeLimit = 0;
   size_t runs = 0, solved = 0, uncertified = 0;
+  size_t notRun = 0;  // skipped once the median was decided as unsolved; counted as unsolved
   double meanTrimmed = 0,
          stdevTrimmed = 0;  // over solved runs, without the fastest and slowest (paper's protocol)
   double median = 0;        // over all runs, an unsolved run counting as infinite
