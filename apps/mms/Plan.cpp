@@ -25,10 +25,9 @@ void printStats(const MmsStats& s) {
       s.graphNodes, s.graphEdges, s.rounds);
   std::printf(
       "  time: %.3f s total = slices %.3f + lines %.3f + connect %.3f + search %.3f + motion %.3f "
-      "+ "
-      "shortcut/certify %.3f\n",
+      "+ shortcut %.3f + certify %.3f\n",
       s.totalSeconds, s.manifolds.sliceSeconds, s.manifolds.lineSeconds, s.manifolds.connectSeconds,
-      s.searchSeconds, s.motionSeconds, s.certifySeconds);
+      s.searchSeconds, s.motionSeconds, s.shortcutSeconds, s.certifySeconds);
   if (s.rejectedPaths)
     std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
   if (s.pathManifolds)
@@ -189,9 +188,9 @@ void printTwoRobotStats(const TwoRobotStats& s) {
       m.lineArcs, s.graphNodes, s.graphEdges, s.crossEdges, s.rounds);
   std::printf(
       "  time: %.3f s total = base slices %.3f + overlays %.3f + lines %.3f + connect %.3f + "
-      "cross %.3f + search %.3f + motion %.3f + shortcut/certify %.3f\n",
+      "cross %.3f + search %.3f + motion %.3f + shortcut %.3f + certify %.3f\n",
       s.totalSeconds, s.baseSliceSeconds, m.sliceSeconds, m.lineSeconds, m.connectSeconds,
-      s.crossSeconds, s.searchSeconds, s.motionSeconds, s.certifySeconds);
+      s.crossSeconds, s.searchSeconds, s.motionSeconds, s.shortcutSeconds, s.certifySeconds);
   if (s.rejectedPaths)
     std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
   if (s.pathManifolds)
@@ -242,7 +241,8 @@ int planTwo(const PlanArgs& a, const Scene& scene) {
   j["phases"] = {{"base_slices", ts.baseSliceSeconds}, {"overlays", ts.manifolds.sliceSeconds},
                  {"lines", ts.manifolds.lineSeconds},  {"connect", ts.manifolds.connectSeconds},
                  {"cross", ts.crossSeconds},           {"search", ts.searchSeconds},
-                 {"motion", ts.motionSeconds},         {"certify", ts.certifySeconds}};
+                 {"motion", ts.motionSeconds},         {"shortcut", ts.shortcutSeconds},
+                 {"certify", ts.certifySeconds}};
   if (res.status == MmsResult::Status::Found) addPath(j, res.certificate, res.waypoints.size());
   writeStats(a, j);
   if (res.status != MmsResult::Status::Found) {
@@ -324,6 +324,7 @@ int plan(const PlanArgs& a) {
                    {"connect", ms.manifolds.connectSeconds},
                    {"search", ms.searchSeconds},
                    {"motion", ms.motionSeconds},
+                   {"shortcut", ms.shortcutSeconds},
                    {"certify", ms.certifySeconds}};
     if (res.status == MmsResult::Status::Found) addPath(j, res.certificate, res.waypoints.size());
     summaries.push_back(j);

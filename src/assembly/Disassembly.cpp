@@ -73,7 +73,7 @@ std::vector<Pose> DisassemblyPlanner::targetsFor(const Scene& step, const Collis
                         {box_.xmax, box_.ymin},
                         {box_.xmax, box_.ymax},
                         {box_.xmin, box_.ymax}};
-  const Slice outside(free, {boxRing});  // the box as one more obstacle
+  const Slice outside(free, {MovedShape{0, 0, boxRing, {0, 0}}});  // the box as one more obstacle
   Random rng(attemptSeed_);
   std::vector<std::pair<double, Pose>> found;
   for (size_t c = 0; c < outside.fscCount(); ++c)

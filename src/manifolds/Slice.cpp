@@ -7,6 +7,7 @@
 #include <CGAL/minkowski_sum_2.h>
 
 #include <atomic>
+#include <map>
 #include <mutex>
 #include <unordered_map>
 #include <variant>
@@ -86,7 +87,30 @@ struct Slice::Impl {
   std::vector<double> areas;
   std::vector<Box> boxes;   // per cell: the bounding box of its outer boundary
   size_t ringVertices = 0;  // over all cells: what locating in doubles may have to scan
+  // On a base slice: sums of moved shapes with neg at the origin, by (shape, angle).
+  std::mutex sumsMutex;
+  std::map<std::pair<size_t, double>, std::shared_ptr<const PolygonWithHoles>> movedSums;
+
+  const PolygonWithHoles& movedSum(const MovedShape& m) {
+    const std::pair<size_t, double> key{m.shape, m.angle};
+    {
+      std::lock_guard lock(sumsMutex);
+      if (auto it = movedSums.find(key); it != movedSums.end()) return *it->second;
+    }
+    // Built outside the lock: two threads may both build it; the first one stored is kept.
+    Polygon turned = exact::toExact(m.turned);
+    if (turned.is_clockwise_oriented()) turned.reverse_orientation();
+    auto sum = std::make_shared<const PolygonWithHoles>(CGAL::minkowski_sum_2(turned, neg));
+    std::lock_guard lock(sumsMutex);
+    return *movedSums.emplace(key, std::move(sum)).first->second;
+  }
 };
+
+Ring MovedShape::placed() const {
+  Ring r = turned;
+  for (Vec2& v : r) v = v + offset;
+  return r;
+}
 
 namespace {
 
@@ -185,23 +209,40 @@ void Slice::index(PointLocation strategy) {
   }
 }
 
-Slice::Slice(const Slice& base, const std::vector<Ring>& extraObstacles, PointLocation strategy)
+Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
+             PointLocation strategy)
     : impl_(base.impl_), angle_(base.angle_), theta_(base.theta_) {
   if (base.impl_->cells.empty() || extraObstacles.empty()) return;
-  std::vector<Polygon> polys;
-  std::vector<Box> boxes;
-  for (const Ring& r : extraObstacles) {
-    polys.push_back(exact::toExact(r));
-    if (polys.back().is_clockwise_oriented()) polys.back().reverse_orientation();
-    boxes.push_back(boundingBox(r));
+  Impl& b = *base.impl_;
+  const Box negBox = boundingBox(exact::toDouble(b.neg));
+  std::vector<PolygonWithHoles> sums;
+  for (const MovedShape& m : extraObstacles) {
+    const Box o = boundingBox(m.placed());
+    const double margin =
+        1e-9 * (1 + std::fabs(o.xmax) + std::fabs(o.ymax) + std::fabs(o.xmin) + std::fabs(o.ymin));
+    const Box sumBox{o.xmin + negBox.xmin - margin, o.ymin + negBox.ymin - margin,
+                     o.xmax + negBox.xmax + margin, o.ymax + negBox.ymax + margin};
+    if (!sumBox.overlaps(b.regionBox)) continue;
+    checkpoint();
+    // Points from exact coordinates, not lazy translations: the overlay's predicates then
+    // fall back on exact values at hand instead of evaluating a construction per point.
+    const PolygonWithHoles& atOrigin = b.movedSum(m);
+    const auto dx = CGAL::exact(FT(m.offset.x)), dy = CGAL::exact(FT(m.offset.y));
+    auto move = [&](const Polygon& poly) {
+      Polygon out;
+      for (const Point& v : poly.vertices())
+        out.push_back(Point(FT(CGAL::exact(v.x()) + dx), FT(CGAL::exact(v.y()) + dy)));
+      return out;
+    };
+    PolygonWithHoles moved(move(atOrigin.outer_boundary()));
+    for (auto h = atOrigin.holes_begin(); h != atOrigin.holes_end(); ++h) moved.add_hole(move(*h));
+    sums.push_back(std::move(moved));
   }
-  std::vector<PolygonWithHoles> sums =
-      reachingSums(polys, boxes, base.impl_->neg, base.impl_->regionBox);
   if (sums.empty()) return;  // nothing changes: share the base's cells
   auto im = std::make_shared<Impl>();
-  im->neg = base.impl_->neg;
-  im->regionBox = base.impl_->regionBox;
-  im->free = base.impl_->free;
+  im->neg = b.neg;
+  im->regionBox = b.regionBox;
+  im->free = b.free;
   subtractUnion(im->free, sums);
   impl_ = std::move(im);
   index(strategy);

@@ -38,14 +38,26 @@ class SliceWorld {
   std::unique_ptr<Impl> impl_;
 };
 
+/// An obstacle that is a shape turned about its origin, then moved by `offset`: a held robot.
+/// Overlays keep the Minkowski sum of `turned` on their base slice, per (shape, angle), and
+/// translate it: fixings of a robot at one angle share one sum. The sum is always formed this
+/// way, so whether it was cached does not change the slice.
+struct MovedShape {
+  size_t shape = 0;  // with `angle`, names `turned`: equal names, equal rings
+  double angle = 0;
+  Ring turned;
+  Vec2 offset;
+  Ring placed() const;  // turned + offset, in doubles
+};
+
 class Slice {
  public:
   Slice(const SliceWorld& world, const exact::RationalAngle& angle,
         PointLocation strategy = PointLocation::Auto);
   /// The same slice with more obstacles (e.g. another robot held fixed): an overlay that only
   /// subtracts the new Minkowski sums from `base`'s free space. Shares `base`'s cells when the
-  /// new obstacles cannot reach it.
-  Slice(const Slice& base, const std::vector<Ring>& extraObstacles,
+  /// new obstacles cannot reach it. Overlays of one base may be built from several threads.
+  Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
         PointLocation strategy = PointLocation::Auto);
   ~Slice();
   Slice(Slice&&) noexcept;

@@ -183,6 +183,7 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
       CertifiedMotion m = certifiedMotion(scene_, checker_, graph_, subspaces_, *nodes, rng_,
                                           {settings_.shortcutAttempts, false});
       stats_.motionSeconds += m.buildSeconds;
+      stats_.shortcutSeconds += m.shortcutSeconds;
       stats_.certifySeconds += m.certifySeconds;
       result.certificate = m.certificate;
       if (m.ok) {

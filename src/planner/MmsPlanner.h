@@ -53,7 +53,8 @@ struct MmsStats {
   size_t pathCells = 0;      // FSCs on the graph path
   size_t pathManifolds = 0;  // the slices and lines they lie on (of slices + lines built)
   size_t rejectedPaths = 0;  // candidate motions the checker refused
-  double searchSeconds = 0, motionSeconds = 0, certifySeconds = 0, totalSeconds = 0;
+  double searchSeconds = 0, motionSeconds = 0, shortcutSeconds = 0, certifySeconds = 0,
+         totalSeconds = 0;
 };
 
 struct MmsResult {

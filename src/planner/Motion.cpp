@@ -1,6 +1,7 @@
 #include "planner/Motion.h"
 
 #include <cmath>
+#include <set>
 
 #include "check/PathChecker.h"
 #include "path/CellRoute.h"
@@ -71,13 +72,19 @@ void shortcutPath(const Scene& scene, const CollisionChecker& checker, Random& r
                   std::vector<Config>& w, bool oneRobotAtATime) {
   PathCheckSettings quick;
   quick.maxEvaluations = 20000;
+  // A short path offers few pairs, so attempts repeat them: a refused straight motion stays
+  // refused (the check is deterministic), and is not checked again. Same result, less work.
+  std::set<std::pair<Config, Config>> refused;
   for (size_t attempt = 0; attempt < attempts && w.size() > 2; ++attempt) {
     size_t i = rng.below(w.size()), j = rng.below(w.size());
     if (i > j) std::swap(i, j);
     if (j < i + 2) continue;
     if (oneRobotAtATime && movingRobots(w, i, j) > 1) continue;
+    if (refused.count({w[i], w[j]})) continue;
     if (checkMotion(scene, checker, {w[i], w[j]}, quick).ok)
       w.erase(w.begin() + i + 1, w.begin() + j);
+    else
+      refused.insert({w[i], w[j]});
   }
 }
 
@@ -91,8 +98,10 @@ CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& chec
   auto w = graphPathMotion(graph, subspaces, nodes, startConfig(scene), goalConfig(scene));
   m.buildSeconds = build.seconds();
   if (!w) return m;
-  Stopwatch certify;
+  Stopwatch shortcut;
   shortcutPath(scene, checker, rng, shortcuts.attempts, *w, shortcuts.oneRobotAtATime);
+  m.shortcutSeconds = shortcut.seconds();
+  Stopwatch certify;
   Path path;
   path.waypoints = *w;
   m.certificate = checkPath(scene, checker, path);

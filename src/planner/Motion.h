@@ -27,7 +27,7 @@ struct CertifiedMotion {
   bool ok = false;
   std::vector<Config> waypoints;
   PathCheckResult certificate;
-  double buildSeconds = 0, certifySeconds = 0;  // motion; shortcuts and certification
+  double buildSeconds = 0, shortcutSeconds = 0, certifySeconds = 0;
 };
 struct ShortcutSettings {
   size_t attempts = 200;

@@ -6,10 +6,21 @@
 namespace mms {
 
 namespace {
-std::vector<Ring> placedRings(const Scene& scene,
-                              const std::vector<std::pair<size_t, Pose>>& held) {
+// Held robots as turned shapes moved to their positions: overlays then share one Minkowski sum
+// per robot and angle.
+std::vector<MovedShape> movedShapes(const Scene& scene,
+                                    const std::vector<std::pair<size_t, Pose>>& held) {
+  std::vector<MovedShape> out;
+  for (const auto& [robot, pose] : held)
+    out.push_back({robot,
+                   pose.theta,
+                   placedRing(scene.robots[robot].shape, {0, 0, pose.theta}),
+                   {pose.x, pose.y}});
+  return out;
+}
+std::vector<Ring> placedRings(const std::vector<MovedShape>& shapes) {
   std::vector<Ring> out;
-  for (const auto& [robot, pose] : held) out.push_back(placedRing(scene.robots[robot].shape, pose));
+  for (const MovedShape& m : shapes) out.push_back(m.placed());
   return out;
 }
 }  // namespace
@@ -52,7 +63,8 @@ Subspace::Subspace(uint32_t id, const Scene& scene, const CollisionChecker& chec
       checker_(checker),
       moving_(moving),
       held_(std::move(held)),
-      heldRings_(placedRings(scene, held_)),
+      heldShapes_(movedShapes(scene, held_)),
+      heldRings_(placedRings(heldShapes_)),
       lineWorld_(scene, moving, heldRings_),
       graph_(graph),
       stats_(stats) {}
@@ -96,7 +108,7 @@ void Subspace::connectToLines(const Slice& slice, const std::vector<size_t>& nod
   stats_.connectSeconds += watchConnect.seconds();
 }
 
-Slice Subspace::overlay(const Slice& base) const { return Slice(base, heldRings_); }
+Slice Subspace::overlay(const Slice& base) const { return Slice(base, heldShapes_); }
 
 size_t Subspace::addSlice(const Slice& base) {
   Stopwatch watch;

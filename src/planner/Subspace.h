@@ -86,7 +86,8 @@ class Subspace {
   const CollisionChecker& checker_;
   size_t moving_;
   std::vector<std::pair<size_t, Pose>> held_;
-  std::vector<Ring> heldRings_;
+  std::vector<MovedShape> heldShapes_;
+  std::vector<Ring> heldRings_;  // the same in doubles, for lines
   LineWorld lineWorld_;
   ConnectivityGraph& graph_;
   SubspaceStats& stats_;

@@ -257,6 +257,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
       CertifiedMotion m = certifiedMotion(scene_, checker_, graph_, subspaces_, *nodes, rng_,
                                           {settings_.shortcutAttempts, /*oneRobotAtATime=*/true});
       stats_.motionSeconds += m.buildSeconds;
+      stats_.shortcutSeconds += m.shortcutSeconds;
       stats_.certifySeconds += m.certifySeconds;
       result.certificate = m.certificate;
       if (m.ok) {

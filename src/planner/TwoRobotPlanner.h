@@ -68,7 +68,7 @@ struct TwoRobotStats {
   std::array<size_t, 2> fixings{0, 0};
   SubspaceStats manifolds;  // slices, lines, cells, arcs over all subspaces
   double baseSliceSeconds = 0, crossSeconds = 0, searchSeconds = 0, motionSeconds = 0,
-         certifySeconds = 0;
+         shortcutSeconds = 0, certifySeconds = 0;
   double totalSeconds = 0;
 };
 
