@@ -36,13 +36,18 @@ Scene randomScene(uint64_t seed) {
 
 }  // namespace
 
-class SliceVsChecker : public ::testing::TestWithParam<uint64_t> {};
+// Every robot and obstacle replaced by its convex hull: slices then sum convex pairs directly.
+Scene convexScene(uint64_t seed) {
+  Scene s = randomScene(seed);
+  for (Ring& o : s.obstacles) o = exact::convexHull(o);
+  for (Robot& r : s.robots) r.shape = exact::convexHull(r.shape);
+  return s;
+}
 
-TEST_P(SliceVsChecker, CellsAreFreeAndTheirOutsideIsNot) {
-  const Scene s = randomScene(GetParam());
+void expectSlicesMatchChecker(const Scene& s, uint64_t seed) {
   const CollisionChecker checker(s);
   const SliceWorld world(s, 0);
-  Random rng(GetParam() * 7 + 1);
+  Random rng(seed * 7 + 1);
   const double eps = 1e-4 * std::max(s.bounds.width(), s.bounds.height());  // 100 tolerances
   size_t inside = 0, outside = 0;
   for (int k = 0; k < 4; ++k) {
@@ -79,6 +84,49 @@ TEST_P(SliceVsChecker, CellsAreFreeAndTheirOutsideIsNot) {
   }
   EXPECT_GT(inside, 500u);
   EXPECT_GT(outside, 100u);
+}
+
+class SliceVsChecker : public ::testing::TestWithParam<uint64_t> {};
+
+TEST_P(SliceVsChecker, CellsAreFreeAndTheirOutsideIsNot) {
+  expectSlicesMatchChecker(randomScene(GetParam()), GetParam());
+}
+
+TEST_P(SliceVsChecker, ConvexSumsToo) {
+  expectSlicesMatchChecker(convexScene(GetParam()), GetParam());
+}
+
+// An overlay subtracts a held shape's sum, computed once per (shape, angle) and translated; a
+// slice built with the placed shape as one more obstacle is the reference.
+TEST_P(SliceVsChecker, OverlaysMatchSlicesWithTheHeldShapeAsObstacle) {
+  for (const bool convex : {false, true}) {
+    const Scene s = convex ? convexScene(GetParam()) : randomScene(GetParam());
+    const SliceWorld world(s, 0);
+    Random rng(GetParam() * 11 + 3);
+    const exact::RationalAngle angle = exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30);
+    const Slice base(world, angle);
+    const double turn = rng.uniform(-M_PI, M_PI);
+    const Ring turned = placedRing(s.robots[0].shape, {0, 0, turn});
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 offset{rng.uniform(s.bounds.xmin, s.bounds.xmax),
+                        rng.uniform(s.bounds.ymin, s.bounds.ymax)};
+      const MovedShape held{0, turn, turned, offset};
+      const Slice overlay(base, {held});
+      const SliceWorld withHeld(s, 0, {held.placed()});
+      const Slice reference(withHeld, angle);
+      EXPECT_EQ(overlay.fscCount(), reference.fscCount()) << "convex " << convex << ", k " << k;
+      size_t agree = 0, inside = 0;
+      for (int i = 0; i < 3000; ++i) {
+        const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax),
+                     rng.uniform(s.bounds.ymin, s.bounds.ymax)};
+        const int a = overlay.locate(p), b = reference.locate(p);
+        agree += (a < 0) == (b < 0);
+        inside += a >= 0;
+      }
+      EXPECT_EQ(agree, 3000u) << "convex " << convex << ", k " << k;
+      EXPECT_GT(inside, 100u);
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, SliceVsChecker, ::testing::Values(1, 2, 3));
