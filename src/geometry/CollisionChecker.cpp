@@ -109,7 +109,7 @@ CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const
   }
   for (size_t i = 0; i < obstacles_.size() && c.distance > 0; ++i) {
     if (box.distance(obstacleBoxes_[i]) >= c.distance) continue;
-    const double d = ringDistance(placedA, box, obstacles_[i], obstacleBoxes_[i]);
+    const double d = ringDistance(placedA, box, obstacles_[i], obstacleBoxes_[i], c.distance);
     if (d < c.distance) c = {d, {Contact::Kind::Obstacle, i}};
   }
   return c;

@@ -1,6 +1,7 @@
 #pragma once
 // Floating-point polygon helpers for the fast paths (collision checking, clearance).
 // They are not exact; exact predicates live in Predicates.h, exact constructions in Exact.h.
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -26,7 +27,10 @@ Vec2 closestPointOnSegment(Vec2 p, Vec2 a, Vec2 b);
 double segmentSegmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
 /// Distance between two closed polygons (0 when they intersect or one contains the other).
-double ringDistance(const Ring& a, const Box& boxA, const Ring& b, const Box& boxB);
+/// Distances of `bound` or more are reported as `bound`: a caller after the nearest of several
+/// rings passes the nearest so far and skips the segment pairs that cannot beat it.
+double ringDistance(const Ring& a, const Box& boxA, const Ring& b, const Box& boxB,
+                    double bound = std::numeric_limits<double>::infinity());
 
 /// Closed polygons a and b share a point.
 bool ringsIntersect(const Ring& a, const Box& boxA, const Ring& b, const Box& boxB);

@@ -34,10 +34,11 @@ struct Box {
   double width() const { return xmax - xmin; }
   double height() const { return ymax - ymin; }
   /// Distance between two boxes (0 when they overlap).
-  double distance(const Box& o) const {
-    double dx = std::fmax(0.0, std::fmax(o.xmin - xmax, xmin - o.xmax));
-    double dy = std::fmax(0.0, std::fmax(o.ymin - ymax, ymin - o.ymax));
-    return std::hypot(dx, dy);
+  double distance(const Box& o) const { return std::sqrt(distance2(o)); }
+  double distance2(const Box& o) const {
+    const double dx = std::fmax(0.0, std::fmax(o.xmin - xmax, xmin - o.xmax));
+    const double dy = std::fmax(0.0, std::fmax(o.ymin - ymax, ymin - o.ymax));
+    return dx * dx + dy * dy;
   }
 };
 
