@@ -109,22 +109,29 @@ void TwoRobotPlanner::addOverlays(
 void TwoRobotPlanner::sliceNarrowArcs(Subspace& sub) {
   const size_t moving = sub.moving();
   const double spacing = 2 * M_PI / double(base_[moving].size());
-  size_t added = 0;
+  std::vector<exact::RationalAngle> middles;
   for (const Line& line : sub.lines())
     for (const Arc& a : line.arcs()) {
-      if (added >= settings_.narrowSlices) return;
+      if (middles.size() >= settings_.narrowSlices) break;
       if (a.full() || a.hi - a.lo >= spacing) continue;
       bool met = false;
       for (const Slice& s : base_[moving]) met = met || a.contains(s.theta());
       for (const Slice& s : sub.localSlices()) met = met || a.contains(s.theta());
-      if (met) continue;
-      Stopwatch watch;
-      const Slice base(*worlds_[moving], exact::rationalAngleNear(0.5 * (a.lo + a.hi), 30));
-      Slice local = sub.overlay(base);
-      stats_.manifolds.sliceSeconds += watch.seconds();
-      sub.addLocalOverlay(std::move(local));
-      ++added;
+      for (const auto& m : middles) met = met || a.contains(m.radians());
+      if (!met) middles.push_back(exact::rationalAngleNear(0.5 * (a.lo + a.hi), 30));
     }
+  // Built on all threads (each a new base slice and its overlay), added in arc order.
+  std::vector<std::optional<Slice>> built(middles.size());
+  Stopwatch watch;
+  const auto errors = parallelFor(middles.size(), settings_.threads, [&](size_t i) {
+    const Slice base(*worlds_[moving], middles[i]);
+    built[i].emplace(sub.overlay(base));
+  });
+  stats_.manifolds.sliceSeconds += watch.seconds();
+  for (size_t i = 0; i < middles.size(); ++i) {
+    if (errors[i]) std::rethrow_exception(errors[i]);
+    sub.addLocalOverlay(std::move(*built[i]));
+  }
 }
 
 Vec2 TwoRobotPlanner::linePoint(size_t robot) {
