@@ -166,3 +166,17 @@ TEST(Degenerate, HundredsOfObstacles) {
 
 }  // namespace
 }  // namespace mms
+
+// Cancellation widens a lazy number's interval to ~1e-8 around 1/3; CGAL's to_double accepts
+// intervals up to 1e-5 wide and would return its middle. Cells in doubles must be closer than
+// the 1e-9 margins of point location in doubles.
+TEST(Degenerate, ExactToDoubleIsTheNearestDoubleEvenAfterCancellation) {
+  const mms::exact::FT third = mms::exact::FT(1) / mms::exact::FT(3);
+  const mms::exact::FT big(1e8);
+  const mms::exact::FT x = (third + big) - big;
+  const std::pair<double, double> interval = CGAL::to_interval(x);
+  ASSERT_GT(interval.second - interval.first, 1e-12);  // the case this test is about
+  const mms::Vec2 v = mms::exact::toDouble(mms::exact::Point(x, x));
+  EXPECT_NEAR(v.x, 1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(v.y, 1.0 / 3.0, 1e-12);
+}

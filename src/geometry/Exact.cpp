@@ -43,7 +43,19 @@ Polygon toExact(const Ring& ring) {
   return p;
 }
 
-Vec2 toDouble(const Point& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
+namespace {
+// CGAL's to_double settles for an interval 1e-5 wide relative to the value; callers here (point
+// location in doubles, with margins of 1e-9) need far closer, so an interval wider than 1e-12
+// is refined by the exact value. Intervals are rarely that wide: this costs nothing in general.
+double nearestDouble(const FT& v) {
+  const std::pair<double, double> i = CGAL::to_interval(v);
+  if (i.second - i.first <= 1e-12 * (1 + std::max(std::fabs(i.first), std::fabs(i.second))))
+    return 0.5 * i.first + 0.5 * i.second;
+  return CGAL::to_double(CGAL::exact(v));
+}
+}  // namespace
+
+Vec2 toDouble(const Point& p) { return {nearestDouble(p.x()), nearestDouble(p.y())}; }
 
 Ring toDouble(const Polygon& poly) {
   Ring r;
