@@ -152,7 +152,8 @@ TEST(BenchCommand, StopDecidedRecordsTheSeedsItSkips) {
   // No path exists in the sealed ring: every run fails, so after 2 of 4 failures (seeds 1 and 2,
   // one run at a time) PRM's median is decided and seeds 3 and 4 are not run.
   const std::string cmd = "bench " + quote(scenario("one-robot/sealed-ring.json")) +
-                          " --planners prm --runs 4 --time-limit 0.3 --stop-decided -o " +
+                          " --planners prm --runs 4 --time-limit 0.3 --stop-decided "
+                          "--memory-limit 0 -o " +  // 0: sanitizer builds reserve terabytes
                           quote(dir.path("b"));
   Outcome r = runMms(cmd);
   ASSERT_EQ(r.code, 0) << r.err;

@@ -139,18 +139,23 @@ Ring MovedShape::placed() const {
 
 namespace {
 
+// Whether the sum of an obstacle with box `o` and -R_theta (box `negBox`) can reach the region
+// (boxes in doubles, with a margin for their rounding).
+bool sumReaches(const Box& o, const Box& negBox, const Box& regionBox) {
+  const double m =
+      1e-9 * (1 + std::fabs(o.xmax) + std::fabs(o.ymax) + std::fabs(o.xmin) + std::fabs(o.ymin));
+  const Box sumBox{o.xmin + negBox.xmin - m, o.ymin + negBox.ymin - m, o.xmax + negBox.xmax + m,
+                   o.ymax + negBox.ymax + m};
+  return sumBox.overlaps(regionBox);
+}
+
 // Sums of `obstacles` with -R_theta that can reach the region (boxes in doubles, with a margin).
 std::vector<PolygonWithHoles> reachingSums(const SliceWorld::Impl& w, const Polygon& neg,
                                            bool negConvex, const Box& regionBox) {
   const Box negBox = boundingBox(exact::toDouble(neg));
   std::vector<PolygonWithHoles> sums;
   for (size_t i = 0; i < w.obstacles.size(); ++i) {
-    const Box& o = w.obstacleBoxes[i];
-    const double m =
-        1e-9 * (1 + std::fabs(o.xmax) + std::fabs(o.ymax) + std::fabs(o.xmin) + std::fabs(o.ymin));
-    const Box sumBox{o.xmin + negBox.xmin - m, o.ymin + negBox.ymin - m, o.xmax + negBox.xmax + m,
-                     o.ymax + negBox.ymax + m};
-    if (!sumBox.overlaps(regionBox)) continue;
+    if (!sumReaches(w.obstacleBoxes[i], negBox, regionBox)) continue;
     checkpoint();
     sums.push_back(minkowskiSum(w.obstacles[i], w.obstacleConvex[i], neg, negConvex));
   }
@@ -241,12 +246,7 @@ Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
   const Box negBox = boundingBox(exact::toDouble(b.neg));
   std::vector<PolygonWithHoles> sums;
   for (const MovedShape& m : extraObstacles) {
-    const Box o = boundingBox(m.placed());
-    const double margin =
-        1e-9 * (1 + std::fabs(o.xmax) + std::fabs(o.ymax) + std::fabs(o.xmin) + std::fabs(o.ymin));
-    const Box sumBox{o.xmin + negBox.xmin - margin, o.ymin + negBox.ymin - margin,
-                     o.xmax + negBox.xmax + margin, o.ymax + negBox.ymax + margin};
-    if (!sumBox.overlaps(b.regionBox)) continue;
+    if (!sumReaches(boundingBox(m.placed()), negBox, b.regionBox)) continue;
     checkpoint();
     // Points from exact coordinates, not lazy translations: the overlay's predicates then
     // fall back on exact values at hand instead of evaluating a construction per point.
