@@ -96,6 +96,7 @@ double ringsArea(const std::vector<Ring>& rings) {
 struct Slice::Impl {
   Polygon neg;  // -R_theta
   bool negConvex = false;
+  Box negBox;     // of neg, in doubles (for culling)
   Box regionBox;  // reference points keeping the robot inside the bounds (doubles, for culling)
   PolygonSet free;
   std::variant<std::monostate, Walk, Trapezoid, Landmarks> locator;
@@ -151,8 +152,8 @@ bool sumReaches(const Box& o, const Box& negBox, const Box& regionBox) {
 
 // Sums of `obstacles` with -R_theta that can reach the region (boxes in doubles, with a margin).
 std::vector<PolygonWithHoles> reachingSums(const SliceWorld::Impl& w, const Polygon& neg,
-                                           bool negConvex, const Box& regionBox) {
-  const Box negBox = boundingBox(exact::toDouble(neg));
+                                           bool negConvex, const Box& negBox,
+                                           const Box& regionBox) {
   std::vector<PolygonWithHoles> sums;
   for (size_t i = 0; i < w.obstacles.size(); ++i) {
     if (!sumReaches(w.obstacleBoxes[i], negBox, regionBox)) continue;
@@ -243,10 +244,9 @@ Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
     : impl_(base.impl_), angle_(base.angle_), theta_(base.theta_) {
   if (base.impl_->cells.empty() || extraObstacles.empty()) return;
   Impl& b = *base.impl_;
-  const Box negBox = boundingBox(exact::toDouble(b.neg));
   std::vector<PolygonWithHoles> sums;
   for (const MovedShape& m : extraObstacles) {
-    if (!sumReaches(boundingBox(m.placed()), negBox, b.regionBox)) continue;
+    if (!sumReaches(boundingBox(m.placed()), b.negBox, b.regionBox)) continue;
     checkpoint();
     // Points from exact coordinates, not lazy translations: the overlay's predicates then
     // fall back on exact values at hand instead of evaluating a construction per point.
@@ -266,6 +266,7 @@ Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
   auto im = std::make_shared<Impl>();
   im->neg = b.neg;
   im->negConvex = b.negConvex;
+  im->negBox = b.negBox;
   im->regionBox = b.regionBox;
   im->free = b.free;
   subtractUnion(im->free, sums);
@@ -305,7 +306,9 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
   impl_->negConvex = w.robotConvex;
   impl_->regionBox = {CGAL::to_double(xlo), CGAL::to_double(ylo), CGAL::to_double(xhi),
                       CGAL::to_double(yhi)};
-  std::vector<PolygonWithHoles> sums = reachingSums(w, neg, w.robotConvex, impl_->regionBox);
+  impl_->negBox = boundingBox(exact::toDouble(neg));
+  std::vector<PolygonWithHoles> sums =
+      reachingSums(w, neg, w.robotConvex, impl_->negBox, impl_->regionBox);
   impl_->free = PolygonSet(region);
   if (!sums.empty()) subtractUnion(impl_->free, sums);
   index(strategy);
