@@ -166,6 +166,9 @@ TEST(Slice, LocationInDoublesAgreesWithExactLocationNearEdges) {
   // The other M part held at its start: the slice then has cells inside the pocket.
   parts.obstacles.push_back(placedRing(parts.robots[1].shape, parts.robots[1].start));
   cases.push_back({parts, parts.robots[0].start.theta});
+  // A slice among 20 obstacles: one cell with a hole per obstacle group, past the vertex count
+  // a scan may cover, so only the rings whose boxes hold a point are scanned.
+  cases.push_back({loadScene(scenario("two-robots/random-polygons.json")), 1.0});
   size_t nearEdge = 0;
   for (const auto& [scene, theta] : cases) {
     const SliceWorld world(scene, 0);

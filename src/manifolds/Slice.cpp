@@ -110,8 +110,7 @@ struct Slice::Impl {
   std::unordered_map<const void*, int> faceIndex;
   std::vector<std::vector<Ring>> cells;
   std::vector<double> areas;
-  std::vector<Box> boxes;   // per cell: the bounding box of its outer boundary
-  size_t ringVertices = 0;  // over all cells: what locating in doubles may have to scan
+  std::vector<std::vector<Box>> ringBoxes;  // per cell, per ring (outer boundary first)
   // On a base slice: sums of moved shapes with neg at the origin, by (shape, angle).
   std::mutex sumsMutex;
   std::map<std::pair<size_t, double>, std::shared_ptr<const PolygonWithHoles>> movedSums;
@@ -218,8 +217,8 @@ void Slice::index(PointLocation strategy) {
       rings.push_back(ccbRing(*h));
     im.faceIndex[&*f] = int(im.cells.size());
     im.areas.push_back(ringsArea(rings));
-    im.boxes.push_back(boundingBox(rings.front()));
-    for (const Ring& r : rings) im.ringVertices += r.size();
+    std::vector<Box>& boxes = im.ringBoxes.emplace_back();
+    for (const Ring& r : rings) boxes.push_back(boundingBox(r));
     im.cells.push_back(std::move(rings));
   }
   switch (strategy) {
@@ -344,28 +343,31 @@ std::optional<bool> insideRing(const Ring& r, Vec2 p, double margin) {
 
 }  // namespace
 
-// Point location in doubles over the cells whose boxes hold p: planners ask millions of these
-// (line points, fixings, cross tests), and CGAL's exact walk costs microseconds each. Gives up
-// (nullopt) near an edge, or on large slices (a scan is linear; the exact locators are not).
+// Point location in doubles: planners ask millions of these (line points, fixings, cross
+// tests), and CGAL's exact walk costs microseconds each. Only rings whose boxes come within the
+// margin of p are scanned (a slice among many obstacles is one cell with a hole per obstacle
+// group, and p lies in the boxes of few of them). Gives up (nullopt) near an edge, or once the
+// rings to scan pass kMaxScanned vertices: a scan is linear, CGAL's trapezoidal map is not.
 std::optional<int> Slice::locateInDoubles(Vec2 p) const {
-  constexpr size_t kMaxVertices = 384;
+  constexpr size_t kMaxScanned = 512;
   const Impl& im = *impl_;
-  if (im.ringVertices > kMaxVertices) return std::nullopt;
   const double margin = 1e-9 * (1 + std::fabs(p.x) + std::fabs(p.y));
+  const Box near{p.x - margin, p.y - margin, p.x + margin, p.y + margin};
+  size_t scanned = 0;
   int found = -1;
   for (size_t i = 0; i < im.cells.size(); ++i) {
-    if (!im.boxes[i].contains(p)) continue;
     const std::vector<Ring>& rings = im.cells[i];
-    bool in = false;
-    for (size_t k = 0; k < rings.size(); ++k) {
+    const std::vector<Box>& boxes = im.ringBoxes[i];
+    bool in = true;  // inside the outer boundary and outside the holes seen so far
+    for (size_t k = 0; k < rings.size() && in; ++k) {
+      if (!boxes[k].overlaps(near)) {
+        in = k > 0;  // off the outer boundary's box: outside; off a hole's box: not in it
+        continue;
+      }
+      if ((scanned += rings[k].size()) > kMaxScanned) return std::nullopt;
       const auto inside = insideRing(rings[k], p, margin);
       if (!inside) return std::nullopt;
-      if (k == 0 && !*inside) break;  // outside the outer boundary
-      if (k == 0) in = true;
-      if (k > 0 && *inside) {
-        in = false;  // in a hole
-        break;
-      }
+      in = *inside == (k == 0);
     }
     if (!in) continue;
     if (found >= 0) return std::nullopt;  // two cells claim p: cannot be, ask CGAL
