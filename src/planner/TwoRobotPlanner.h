@@ -41,9 +41,9 @@ struct TwoRobotSettings {
   double expandShare = 0.5;
   // Of those, the share grown as RRT-Connect chains (both robots pushed in turn towards a
   // random target: interlocked parts climbing out together); the rest are single fixings in
-  // sparsely connected cells (EST), half of them near cell vertices (a part tucked into a
-  // corner). Measured on the assembly scenes: chains are needed for the first, and slow the
-  // second down when they are the majority.
+  // reached cells (the smaller of two drawn uniformly), half of them near cell vertices (a part
+  // tucked into a corner). Measured on the assembly scenes: chains are needed for the first, and
+  // slow the second down when they are the majority.
   double connectShare = 0.25;
   size_t connectSteps = 200;  // at most this many fixings per chain
   // A new subspace is tested for meeting points against at most this many subspaces of the
