@@ -114,6 +114,22 @@ TEST(TwoRobots, NarrowArcSlicesOpenTheTightestPacman) {
   }
 }
 
+// Narrow-arc slices are built only when start and goal do not connect without them: among the
+// random polygons the four start and goal subspaces connect them (seeds 1-3), so the first search
+// runs before any is built; the tightest Pacman (above) needs them and builds them.
+TEST(TwoRobots, NarrowArcSlicesWaitUntilStartAndGoalFailToConnect) {
+  const Scene s = loadScene(scenario("two-robots/random-polygons.json"));
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    const TwoRobotResult r = plan(s, seed);
+    ASSERT_EQ(r.status, MmsResult::Status::Found) << "seed " << seed;
+    EXPECT_EQ(r.stats.subspaces, 4u) << "seed " << seed;
+    EXPECT_EQ(r.stats.manifolds.localSlices, 0u) << "seed " << seed;
+  }
+  const TwoRobotResult tight = plan(pacmanScene(0.98), 1);
+  ASSERT_EQ(tight.status, MmsResult::Status::Found);
+  EXPECT_GT(tight.stats.manifolds.localSlices, 0u);
+}
+
 TEST(TwoRobots, SameSeedSamePath) {
   const Scene s = loadScene(scenario("two-robots/pacman-0.5.json"));
   const TwoRobotResult a = plan(s, 3), b = plan(s, 3);

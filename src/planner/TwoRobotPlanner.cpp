@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include "planner/Motion.h"
 #include "util/Parallel.h"
@@ -134,6 +135,20 @@ void TwoRobotPlanner::sliceNarrowArcs(Subspace& sub) {
   }
 }
 
+// Narrow-arc slices wait until start and goal do not connect without them (each needs a base
+// slice of its own, the Minkowski sums of every obstacle): on the random polygons the first
+// search then runs before 10-17 of them are built. They only join cells and arcs inside their
+// subspace (fixings are drawn at shared angles), so building them later loses no meeting point.
+void TwoRobotPlanner::sliceNarrowArcsIfDisconnected() {
+  if (from_ >= 0 && graph_.connected(size_t(from_), size_t(to_))) return;
+  sliceNarrowArcsNow();
+}
+
+void TwoRobotPlanner::sliceNarrowArcsNow() {
+  // Taken first: a subspace the time limit cuts short is not retried.
+  for (const size_t k : std::exchange(narrowPending_, {})) sliceNarrowArcs(*subspaces_[k]);
+}
+
 Vec2 TwoRobotPlanner::linePoint(size_t robot) {
   const Box& b = scene_.bounds;
   auto uniform = [&] { return Vec2{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)}; };
@@ -168,7 +183,7 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
     sub.addLine({r.start.x, r.start.y});  // line 0
     sub.addLine({r.goal.x, r.goal.y});    // line 1
     for (size_t i = 0; i < settings_.nLines && !stop(); ++i) sub.addLine(linePoint(moving));
-    sliceNarrowArcs(sub);
+    narrowPending_.push_back(subspaces_.size() - 1);
   }
   // Meet subspaces of the other family at the pair of their held poses.
   Stopwatch watch;
@@ -231,6 +246,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
   if (from < 0 || to < 0) return finish(result, MmsResult::Status::NotFound);
   from_ = from;
   to_ = to;
+  sliceNarrowArcsIfDisconnected();
 
   size_t target = settings_.nFixings;
   Stopwatch sinceReport;
@@ -248,6 +264,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
         for (size_t r = 0; r < 2 && !stop(); ++r) {
           if (!wants(r)) continue;
           if (!grow(r, stop)) exhausted[r] = true;
+          sliceNarrowArcsIfDisconnected();
           if (progress && sinceReport.seconds() >= 1.0) {
             progress(finish(result, MmsResult::Status::NotFound).stats);
             sinceReport = Stopwatch();
@@ -276,6 +293,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
         return finish(result, MmsResult::Status::Found);
       }
       ++stats_.rejectedPaths;
+      sliceNarrowArcsNow();
     }
     if (progress) progress(finish(result, MmsResult::Status::NotFound).stats);
     if (stop())

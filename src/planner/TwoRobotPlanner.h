@@ -113,6 +113,8 @@ class TwoRobotPlanner {
   long nodeFor(const Subspace& sub, const Fixing& f, bool knownFree = false) const;
   Vec2 linePoint(size_t robot);
   void sliceNarrowArcs(Subspace& sub);
+  void sliceNarrowArcsIfDisconnected();
+  void sliceNarrowArcsNow();
   size_t angleCount(size_t robot) const;
   void addAngles(size_t robot, const std::vector<double>& thetas, const Termination& stop);
   TwoRobotResult finish(TwoRobotResult r, MmsResult::Status status);
@@ -130,6 +132,7 @@ class TwoRobotPlanner {
       base_;                     // per robot: its slice at each of its angles, obstacles only
   std::vector<Fixing> fixings_;  // fixings_[i] is held in subspaces_[i]
   std::vector<std::unique_ptr<Subspace>> subspaces_;
+  std::vector<size_t> narrowPending_;  // subspaces whose narrow-arc slices are not built yet
   ConnectivityGraph graph_;
   std::array<std::vector<size_t>, 2> cells_;    // per robot: slice-cell nodes where it moves
   std::array<std::vector<size_t>, 2> reached_;  // those connected to the start or goal
