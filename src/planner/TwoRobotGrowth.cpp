@@ -91,18 +91,19 @@ bool TwoRobotPlanner::uniformFixing(size_t robot, Fixing& out) {
 // 1-40).
 bool TwoRobotPlanner::frontierFixing(size_t robot, Fixing& out) {
   const auto& cells = reached_[robot];
-  auto cellOf = [&](size_t v) -> std::pair<const Slice*, const ConnectivityGraph::Node*> {
-    const auto& n = graph_.node(v);
-    return {&subspaces_[n.subspace]->slices()[n.manifold], &n};
+  auto sliceOf = [&](const ConnectivityGraph::Node& n) -> const Slice& {
+    return subspaces_[n.subspace]->slice(n.manifold);
   };
+  auto area = [&](size_t v) { return sliceOf(graph_.node(v)).area(graph_.node(v).cell); };
   for (int attempt = 0; attempt < 16; ++attempt) {
-    auto [slice, n] = cellOf(cells[rng_.below(cells.size())]);
-    const auto [other, m] = cellOf(cells[rng_.below(cells.size())]);
-    if (other->area(m->cell) < slice->area(n->cell)) slice = other, n = m;
-    const auto p = rng_.uniform() < 0.5 ? samplePointNearVertex(*slice, n->cell, rng_)
-                                        : samplePointInCell(*slice, n->cell, rng_, 16);
+    size_t v = cells[rng_.below(cells.size())];
+    if (const size_t w = cells[rng_.below(cells.size())]; area(w) < area(v)) v = w;
+    const auto& n = graph_.node(v);
+    const Slice& slice = sliceOf(n);
+    const auto p = rng_.uniform() < 0.5 ? samplePointNearVertex(slice, n.cell, rng_)
+                                        : samplePointInCell(slice, n.cell, rng_, 16);
     if (!p) continue;
-    out = fixingAt(robot, *slice, n->manifold, *p, long(n->subspace));
+    out = fixingAt(robot, slice, n.manifold, *p, long(n.subspace));
     ++stats_.expandedFixings;
     return true;
   }
