@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "scene/Errors.h"
+#include "mms/Errors.h"
 
 namespace mms::fuzz {
 

@@ -2,7 +2,7 @@
 // Independent geometric references for tests: plain double-precision polygon tests, separate
 // from the exact constructions the manifolds use.
 #include "geometry/PolygonOps.h"
-#include "scene/Scene.h"
+#include "mms/Scene.h"
 
 namespace mms::test {
 

@@ -6,7 +6,7 @@
 #include <new>
 #include <sstream>
 
-#include "scene/Errors.h"
+#include "mms/Errors.h"
 #include "util/CommandBoundary.h"
 #include "util/Interrupt.h"
 

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "Support.h"
-#include "util/Termination.h"
+#include "mms/Termination.h"
 
 using namespace mms;
 using namespace mms::test;

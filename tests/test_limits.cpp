@@ -6,10 +6,10 @@
 #include "Support.h"
 #include "geometry/Exact.h"
 #include "manifolds/Slice.h"
+#include "mms/Termination.h"
 #include "planner/MmsPlanner.h"
 #include "planner/TwoRobotPlanner.h"
 #include "scene/RandomScene.h"
-#include "util/Termination.h"
 
 namespace mms {
 namespace {

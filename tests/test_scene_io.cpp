@@ -8,7 +8,7 @@
 
 #include "Support.h"
 #include "geometry/PolygonOps.h"
-#include "scene/Errors.h"
+#include "mms/Errors.h"
 #include "scene/PathIO.h"
 #include "scene/SceneIO.h"
 

@@ -6,8 +6,8 @@
 
 #include "Commands.h"
 #include "assembly/Disassembly.h"
+#include "mms/Errors.h"
 #include "render/SvgRenderer.h"
-#include "scene/Errors.h"
 #include "scene/PathIO.h"
 #include "scene/SceneIO.h"
 #include "util/AtomicFile.h"

@@ -19,8 +19,9 @@
 #include <thread>
 
 #include "Commands.h"
+#include "api/RunSummary.h"
 #include "bench/Report.h"
-#include "scene/Errors.h"
+#include "mms/Errors.h"
 #include "scene/Generators.h"
 #include "scene/Json.h"
 #include "scene/SceneIO.h"
@@ -91,20 +92,17 @@ void fillFromStats(RunRecord& r, const std::string& statsFile) {
   std::ifstream in(statsFile);
   if (!in) return;
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
-    r.status = j.value("status", r.status);
-    r.seconds = j.value("seconds", r.seconds);
-    if (j.contains("path")) {
-      r.translation = j["path"].value("translation", 0.0);
-      r.rotation = j["path"].value("rotation", 0.0);
+    const RunSummary s = runSummaryFromJson(nlohmann::json::parse(in));
+    r.status = toString(s.status);
+    r.seconds = s.stats.seconds;
+    if (s.status == PlanStatus::Found) {
+      r.translation = s.certificate.translation;
+      r.rotation = s.certificate.rotation;
     }
-    r.graphSize = j.value("graph_nodes", j.value("graph_states", size_t(0)));
-    if (j.contains("manifolds")) {
-      const auto& m = j["manifolds"];
-      r.manifoldsBuilt = m.value("slices", size_t(0)) + m.value("lines", size_t(0));
-      r.manifoldsUsed = m.value("path_manifolds", size_t(0));
-    }
-    r.detail = j.value("rejection", "");
+    r.graphSize = s.stats.graphNodes;
+    r.manifoldsBuilt = s.stats.manifoldsBuilt;
+    r.manifoldsUsed = s.stats.manifoldsUsed;
+    r.detail = s.certificate.reason;
   } catch (const std::exception&) {
     r.detail = "unreadable statistics";
   }

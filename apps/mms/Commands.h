@@ -4,7 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/Scene.h"
+#include "mms/Planner.h"
+#include "mms/Scene.h"
 
 namespace mms::cli {
 
@@ -48,19 +49,14 @@ struct PlanArgs {
   std::string scene, output, svg;
   uint64_t seed = 1;
   double timeLimit = 60;
-  double memoryMb = 0;                          // 0: no limit
-  unsigned threads = 1;                         // slice-building threads; 0: all hardware threads
-  size_t nTheta = 0, nLines = 0, nFixings = 0;  // 0: the planner's default
-  double expandShare = -1;                      // < 0: the planner's default
+  double memoryMb = 0;  // 0: no limit
   bool quiet = false;
   bool svgRoadmap = false;   // draw line points and the path's slice cells
   bool saveRoadmap = false;  // keep them in the path file (for mms view)
   std::string queries;       // mms-queries/1 file: several queries on one roadmap
   std::string planner = "mms";
   std::string statsJson;  // write a machine-readable summary of the run here
-  double resolution = 0.002, range = 0, segmentFactor = 10;
-  unsigned neighbours = 0;
-  bool simplify = false;
+  PlannerParams params;   // the planner's declared parameters the user gave
 };
 int plan(const PlanArgs& a);
 

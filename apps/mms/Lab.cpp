@@ -5,10 +5,10 @@
 
 #include "Commands.h"
 #include "lab/Experiments.h"
-#include "scene/Errors.h"
+#include "mms/Errors.h"
+#include "mms/Termination.h"
 #include "util/AtomicFile.h"
 #include "util/Parallel.h"
-#include "util/Termination.h"
 
 namespace mms::cli {
 

@@ -4,10 +4,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <map>
 
 #include "Commands.h"
-#include "baselines/OmplPlanner.h"
-#include "scene/Errors.h"
+#include "mms/Errors.h"
+#include "mms/Planner.h"
 #include "util/CommandBoundary.h"
 #include "util/Interrupt.h"
 #include "util/MemoryLimit.h"
@@ -22,6 +23,20 @@ const CLI::Validator memoryLimitMb(
       return mb == 0 || (mb >= 64 && mb <= 1e7) ? "" : "must be 0 (no limit) or 64 to 1e7 MB";
     },
     "0|64..1e7");
+
+// Every planner's parameters, once per name (planners share some), with the planners that
+// take each.
+std::vector<std::pair<mms::ParamSpec, std::vector<std::string>>> declaredParams() {
+  std::vector<std::pair<mms::ParamSpec, std::vector<std::string>>> out;
+  for (const mms::PlannerInfo& p : mms::planners())
+    for (const mms::ParamSpec& spec : p.params) {
+      auto it = std::find_if(out.begin(), out.end(),
+                             [&](const auto& e) { return e.first.name == spec.name; });
+      if (it == out.end()) it = out.insert(out.end(), {spec, {}});
+      it->second.push_back(p.name);
+    }
+  return out;
+}
 
 }  // namespace
 
@@ -81,67 +96,38 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e6));
   planCmd
-      ->add_option("--threads", pa.threads,
-                   "Threads that build slices (0: all cores). Same seed, same path file whatever "
-                   "the number")
-      ->capture_default_str()
-      ->check(CLI::Range(0u, 256u));
-  planCmd
       ->add_option("--memory-limit", pa.memoryMb,
                    "MB of address space; beyond it the run ends with 'out of memory' (0: none)")
       ->capture_default_str()
       ->check(memoryLimitMb);
-  planCmd
-      ->add_option(
-          "--n-theta", pa.nTheta,
-          "Angles sampled per robot (n_theta). One robot: slices in the first round, doubling each "
-          "round (default 16). Two robots: the fixed angle set of each robot (default 16)")
-      ->check(CLI::Range(1, 1000000));
-  planCmd
-      ->add_option("--n-lines", pa.nLines,
-                   "Lines (fixed positions, n_l). One robot: in the first round, doubling each "
-                   "round (default "
-                   "1024). Two robots: per subspace (default 128)")
-      ->check(CLI::Range(1, 10000000));
-  planCmd
-      ->add_option(
-          "--n-fixings", pa.nFixings,
-          "Two robots: fixings per robot in the first round (n_f), doubling each round (default 8)")
-      ->check(CLI::Range(1, 1000000));
-  planCmd
-      ->add_option("--expand-share", pa.expandShare,
-                   "Two robots: share of fixings drawn from free-space cells already reached from "
-                   "the start or goal (default 0.5; the rest are uniform)")
-      ->check(CLI::Range(0.0, 1.0));
   planCmd->add_flag("-q,--quiet", pa.quiet, "No progress messages on stderr");
-  std::vector<std::string> plannerNames{"mms"};
-  for (const std::string& n : mms::omplPlannerNames()) plannerNames.push_back(n);
-  planCmd
-      ->add_option(
-          "--planner", pa.planner,
-          "mms (default), or an OMPL baseline on the same collision checker: prm, obprm, uobprm, "
-          "prm-bridge, prm-gaussian, rrt, rrtconnect, kpiece, bkpiece, lazyprm")
-      ->check(CLI::IsMember(plannerNames));
-  planCmd
-      ->add_option("--resolution", pa.resolution,
-                   "OMPL planners: motion-check resolution, a fraction of the state space's extent")
-      ->capture_default_str()
-      ->check(CLI::Range(1e-7, 0.5));
-  planCmd
-      ->add_option("--range", pa.range,
-                   "OMPL tree planners and LazyPRM: maximum motion length (0: OMPL's default)")
-      ->check(CLI::Range(0.0, 1e9));
-  planCmd
-      ->add_option("--k", pa.neighbours,
-                   "OMPL PRM family: nearest neighbours per milestone (0: OMPL's default)")
-      ->check(CLI::Range(0u, 100000u));
-  planCmd
-      ->add_option("--segment-factor", pa.segmentFactor,
-                   "U-OB-PRM: segment length l in units of the resolution")
-      ->capture_default_str()
-      ->check(CLI::Range(1.0, 1e6));
-  planCmd->add_flag("--simplify", pa.simplify,
-                    "OMPL planners: run OMPL's path simplifier on the solution");
+  std::vector<std::string> plannerNames;
+  std::string plannerHelp = "The planner (default mms):";
+  for (const mms::PlannerInfo& p : mms::planners()) {
+    plannerNames.push_back(p.name);
+    plannerHelp += "\n  " + p.name + ": " + p.summary;
+  }
+  planCmd->add_option("--planner", pa.planner, plannerHelp)->check(CLI::IsMember(plannerNames));
+  // Every planner's declared parameters, each one option; which planner takes which is
+  // checked once the planner is known (mms::makePlanner).
+  std::map<std::string, std::string> paramText;
+  std::map<std::string, bool> paramFlag;
+  std::vector<std::pair<std::string, CLI::Option*>> paramOptions;
+  const size_t omplPlanners = mms::planners().size() - 1;
+  for (const auto& [spec, users] : declaredParams()) {
+    std::string help = spec.help, list;
+    for (const std::string& u : users) list += (list.empty() ? "" : ", ") + u;
+    if (users.size() == omplPlanners && users.front() != "mms") list = "every OMPL planner";
+    if (users.size() < mms::planners().size()) help += " [" + list + "]";
+    CLI::Option* o =
+        spec.type == mms::ParamSpec::Type::Flag
+            ? planCmd->add_flag("--" + spec.name, paramFlag[spec.name], help)
+            : planCmd->add_option("--" + spec.name, paramText[spec.name], help)
+                  ->type_name(
+                      (spec.type == mms::ParamSpec::Type::Integer ? "INT in [" : "FLOAT in [") +
+                      mms::formatNumber(spec.min) + ", " + mms::formatNumber(spec.max) + "]");
+    paramOptions.emplace_back(spec.name, o);
+  }
   planCmd->add_option("--stats-json", pa.statsJson,
                       "Write a JSON summary of the run (status, times, sizes) here");
   planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
@@ -218,8 +204,8 @@ int main(int argc, char** argv) {
   assembleCmd->add_flag("-q,--quiet", aa.quiet, "No progress messages on stderr");
 
   BenchArgs ba;
-  std::string plannersList =
-      "mms,prm,obprm,uobprm,prm-bridge,prm-gaussian,rrt,rrtconnect,kpiece,bkpiece,lazyprm";
+  std::string plannersList;
+  for (const std::string& n : plannerNames) plannersList += (plannersList.empty() ? "" : ",") + n;
   std::string shard = "1/1";
   auto* benchCmd = app.add_subcommand("bench",
                                       "Run planners on scenes, N seeds each, every run in its own "
@@ -352,7 +338,16 @@ int main(int argc, char** argv) {
           if (!mms::limitMemory(*planCmd ? pa.memoryMb : aa.memoryMb))
             throw mms::InputError("--memory-limit: the system refused the limit");
         }
-        if (*planCmd) return plan(pa);
+        if (*planCmd) {
+          for (const auto& [name, option] : paramOptions) {
+            if (option->count() == 0) continue;
+            double v = 1;  // a flag given
+            if (!paramFlag.count(name) && !CLI::detail::lexical_cast(paramText[name], v))
+              throw mms::InputError("--" + name + ": '" + paramText[name] + "' is not a number");
+            pa.params.values[name] = v;
+          }
+          return plan(pa);
+        }
         if (*scenarioCmd) return scenario(sa);
         if (*assembleCmd) return assemble(aa);
         if (*benchCmd) {

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "geometry/CollisionChecker.h"
-#include "scene/Scene.h"
-#include "util/Termination.h"
+#include "mms/Scene.h"
+#include "mms/Termination.h"
 
 namespace mms {
 

@@ -26,13 +26,6 @@ namespace mms {
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
-const std::vector<std::string>& omplPlannerNames() {
-  static const std::vector<std::string> names{"prm",          "obprm",  "uobprm",     "prm-bridge",
-                                              "prm-gaussian", "rrt",    "rrtconnect", "kpiece",
-                                              "bkpiece",      "lazyprm"};
-  return names;
-}
-
 namespace {
 
 // State <-> configuration: robot i is component i (SE(2), or R^2 keeping its start angle).

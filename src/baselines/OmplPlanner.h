@@ -7,15 +7,12 @@
 #include <vector>
 
 #include "check/PathChecker.h"
-#include "util/Termination.h"
+#include "mms/Termination.h"
 
 namespace mms {
 
-/// The planner names `mms plan --planner` accepts besides "mms".
-const std::vector<std::string>& omplPlannerNames();
-
 struct OmplSettings {
-  std::string planner = "rrtconnect";
+  std::string planner = "rrtconnect";  // a name of the registry (src/api/OmplPlanners.cpp)
   uint64_t seed = 1;
   /// Motion-check resolution as a fraction of the state space's extent (OMPL's
   /// setStateValidityCheckingResolution).

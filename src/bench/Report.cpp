@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "scene/Errors.h"
+#include "mms/Errors.h"
 
 namespace mms {
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "geometry/CollisionChecker.h"
+#include "mms/Certificate.h"
 #include "scene/PathIO.h"
 
 namespace mms {
@@ -18,19 +19,6 @@ struct PathCheckSettings {
   /// Clearance evaluations allowed over the whole path; a path that slides along contacts
   /// for long stretches needs pieces as short as the tolerance and may run out of them.
   size_t maxEvaluations = 20'000'000;
-};
-
-struct PathCheckResult {
-  bool ok = false;
-  // When !ok: where and why. `segment` is the index of the segment's first waypoint.
-  size_t segment = 0;
-  double parameter = 0;  // along the segment, in [0, 1]
-  std::string reason;
-  // Statistics.
-  double minClearance = 0;  // smallest clearance seen at a checked pose (0: touching)
-  size_t evaluations = 0;   // clearance evaluations (poses checked)
-  double translation = 0;   // summed over robots
-  double rotation = 0;      // radians, summed over robots
 };
 
 /// Checks that the path starts at the scene's start, ends at its goal, keeps translate-only

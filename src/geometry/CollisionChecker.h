@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/Scene.h"
+#include "mms/Scene.h"
 
 namespace mms {
 

@@ -8,7 +8,7 @@
 #include <array>
 #include <vector>
 
-#include "geometry/Vec2.h"
+#include "mms/Geometry.h"
 
 namespace mms::exact {
 

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "geometry/Vec2.h"
+#include "mms/Geometry.h"
 
 namespace mms {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "import/OmplApp.h"
-#include "scene/Scene.h"
+#include "mms/Scene.h"
 
 namespace mms {
 

@@ -6,7 +6,7 @@
 #include <pugixml.hpp>
 #include <sstream>
 
-#include "scene/Errors.h"
+#include "mms/Errors.h"
 
 namespace mms {
 

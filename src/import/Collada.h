@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/Vec2.h"
+#include "mms/Geometry.h"
 
 namespace mms {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "import/OmplApp.h"
-#include "scene/Scene.h"
+#include "mms/Scene.h"
 
 namespace mms {
 

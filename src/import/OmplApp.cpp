@@ -11,7 +11,7 @@
 
 #include "geometry/Exact.h"
 #include "import/Collada.h"
-#include "scene/Errors.h"
+#include "mms/Errors.h"
 #include "scene/SceneIO.h"
 
 namespace mms {

@@ -12,9 +12,9 @@
 #include "lab/PacmanPassage.h"
 #include "lab/Plot.h"
 #include "lab/PrmOnBoxes.h"
+#include "mms/Termination.h"
 #include "util/Parallel.h"
 #include "util/Random.h"
-#include "util/Termination.h"
 
 namespace mms::lab {
 
@@ -358,7 +358,8 @@ std::vector<LabFile> passagesLab(const LabOptions& o) {
        << "), its configuration of least clearance, moved within the path's normal hyperplane "
           "to the widest point near it; there, the estimated radius of the largest k-disk (k = "
           "6..1) in C-space, angles scaled by each robot's radius. Dimension: the largest k < 6 "
-          "whose value is at least 10 times the 6-clearance (0: none is, not a narrow passage at this cap).\n\n| tightness | path | k = 6 | 5 | "
+          "whose value is at least 10 times the 6-clearance (0: none is, not a narrow passage at "
+          "this cap).\n\n| tightness | path | k = 6 | 5 | "
           "4 | 3 | 2 | 1 | dimension |\n|---|---|---|---|---|---|---|---|---|\n";
     std::vector<Series> ps;
     for (int k = 6; k >= 1; --k) {

@@ -4,10 +4,10 @@
 #include <numeric>
 
 #include "geometry/CollisionChecker.h"
+#include "mms/Termination.h"
 #include "planner/TwoRobotPlanner.h"
 #include "scene/Generators.h"
 #include "util/Random.h"
-#include "util/Termination.h"
 
 namespace mms::lab {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lab/KClearance.h"
-#include "scene/Scene.h"
+#include "mms/Scene.h"
 
 namespace mms::lab {
 

@@ -14,7 +14,7 @@
 #include <variant>
 
 #include "geometry/PolygonOps.h"
-#include "util/Termination.h"
+#include "mms/Termination.h"
 
 namespace mms {
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "geometry/Exact.h"
-#include "scene/Scene.h"
+#include "mms/Scene.h"
 
 namespace mms {
 

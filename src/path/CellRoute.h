@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "geometry/Vec2.h"
+#include "mms/Geometry.h"
 
 namespace mms {
 

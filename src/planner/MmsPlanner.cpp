@@ -4,6 +4,7 @@
 
 #include "path/CellRoute.h"
 #include "planner/Motion.h"
+#include "planner/Rounds.h"
 #include "util/Parallel.h"
 
 namespace mms {
@@ -154,61 +155,43 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
     progress(now);
     sinceReport = Stopwatch();
   };
-  // The search runs as soon as start and goal connect (the graph keeps a union-find), not only
-  // at the end of a round: in open scenes a few dozen lines suffice. After a candidate the
-  // checker refused, the round is completed before the next search.
-  bool searchEarly = true;
-  ++stats_.rounds;
-  while (true) {
-    auto connected = [&] { return searchEarly && graph_.connected(size_t(from), size_t(to)); };
-    try {
-      // Slices and lines interleaved in the round's proportion, so that an early connection
-      // finds few of either built (the angle sequence covers the circle evenly at every prefix).
-      while ((slices().size() < targetSlices || lines().size() < targetLines) && !stop() &&
-             !connected()) {
-        const bool slicesBehind = slices().size() * targetLines <= lines().size() * targetSlices;
-        if (slices().size() < targetSlices && (slicesBehind || lines().size() >= targetLines))
-          addNextSlice();
-        else
-          sub.addLine(nextLinePoint());
-        report(false);
-      }
-    } catch (const Stopped&) {
-      // The limit struck inside a manifold: it is dropped, the search runs on the rest.
-    }
-    Stopwatch search;
-    const auto nodes = graph_.path(size_t(from), size_t(to));
-    stats_.searchSeconds += search.seconds();
-    if (nodes) {
-      CertifiedMotion m = certifiedMotion(scene_, checker_, graph_, subspaces_, *nodes, rng_,
-                                          {settings_.shortcutAttempts, false});
-      stats_.motionSeconds += m.buildSeconds;
-      stats_.shortcutSeconds += m.shortcutSeconds;
-      stats_.certifySeconds += m.certifySeconds;
-      result.certificate = m.certificate;
-      if (m.ok) {
-        stats_.pathCells = nodes->size();
-        stats_.pathManifolds = graph_.footprint(*nodes).manifolds;
-        for (size_t v : *nodes) result.cells.push_back(graph_.node(v));
-        result.waypoints = std::move(m.waypoints);
-        return finish(result, MmsResult::Status::Found, total.seconds());
-      }
-      ++stats_.rejectedPaths;
-    }
-    report(true);
-    if (stop())
-      return finish(result,
-                    stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound,
-                    total.seconds());
-    if (slices().size() < targetSlices || lines().size() < targetLines) {
-      searchEarly = false;  // a refused candidate ended the round early: complete it
-      continue;
-    }
-    searchEarly = true;
-    ++stats_.rounds;
+  // Slices and lines interleaved in the round's proportion, so that an early connection finds
+  // few of either built (the angle sequence covers the circle evenly at every prefix). The
+  // search runs as soon as start and goal connect: in open scenes a few dozen lines suffice.
+  RoundHooks h;
+  h.growing = [&] { return slices().size() < targetSlices || lines().size() < targetLines; };
+  h.complete = [&] { return !h.growing(); };
+  h.grow = [&] {
+    const bool slicesBehind = slices().size() * targetLines <= lines().size() * targetSlices;
+    if (slices().size() < targetSlices && (slicesBehind || lines().size() >= targetLines))
+      addNextSlice();
+    else
+      sub.addLine(nextLinePoint());
+    report(false);
+  };
+  h.motion = [&](const std::vector<size_t>& nodes) {
+    return certifiedMotion(scene_, checker_, graph_, subspaces_, nodes, rng_,
+                           {settings_.shortcutAttempts, false});
+  };
+  h.report = [&] { report(true); };
+  h.next = [&] {
     targetSlices *= 2;
     targetLines *= 2;
+    return true;
+  };
+  RoundsOutcome o = runRounds(h, graph_, size_t(from), size_t(to), stop, stats_);
+  result.certificate = o.motion.certificate;
+  if (o.end == RoundsOutcome::End::Found) {
+    stats_.pathCells = o.nodes.size();
+    stats_.pathManifolds = graph_.footprint(o.nodes).manifolds;
+    for (size_t v : o.nodes) result.cells.push_back(graph_.node(v));
+    result.waypoints = std::move(o.motion.waypoints);
+    return finish(result, MmsResult::Status::Found, total.seconds());
   }
+  return finish(result,
+                o.end == RoundsOutcome::End::Cancelled ? MmsResult::Status::Cancelled
+                                                       : MmsResult::Status::NotFound,
+                total.seconds());
 }
 
 }  // namespace mms

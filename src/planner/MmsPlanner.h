@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "check/PathChecker.h"
+#include "mms/Termination.h"
 #include "planner/Subspace.h"
 #include "util/Random.h"
-#include "util/Termination.h"
 
 namespace mms {
 

@@ -4,8 +4,8 @@
 #include <set>
 
 #include "check/PathChecker.h"
+#include "mms/Termination.h"
 #include "path/CellRoute.h"
-#include "util/Termination.h"
 
 namespace mms {
 

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "check/PathChecker.h"
+#include "mms/Scene.h"
 #include "planner/Subspace.h"
-#include "scene/Scene.h"
 #include "util/Random.h"
 
 namespace mms {

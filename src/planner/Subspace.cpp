@@ -1,7 +1,7 @@
 #include "planner/Subspace.h"
 
+#include "mms/Termination.h"
 #include "util/Parallel.h"
-#include "util/Termination.h"
 
 namespace mms {
 

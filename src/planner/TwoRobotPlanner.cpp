@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "planner/Motion.h"
+#include "planner/Rounds.h"
 #include "util/Parallel.h"
 
 namespace mms {
@@ -250,63 +251,34 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
 
   size_t target = settings_.nFixings;
   Stopwatch sinceReport;
-  // The search runs as soon as start and goal connect (union-find in the graph), not only at
-  // the end of a round; the robots take turns, so both families grow before that. After a
-  // candidate the checker refused, the round is completed before the next search.
-  bool searchEarly = true;
-  ++stats_.rounds;
-  while (true) {
-    try {
-      std::array<bool, 2> exhausted{false, false};
-      auto wants = [&](size_t r) { return !exhausted[r] && stats_.fixings[r] < target + 2; };
-      while ((wants(0) || wants(1)) && !stop() &&
-             !(searchEarly && graph_.connected(size_t(from), size_t(to))))
-        for (size_t r = 0; r < 2 && !stop(); ++r) {
-          if (!wants(r)) continue;
-          if (!grow(r, stop)) exhausted[r] = true;
-          sliceNarrowArcsIfDisconnected();
-          if (progress && sinceReport.seconds() >= 1.0) {
-            progress(finish(result, MmsResult::Status::NotFound).stats);
-            sinceReport = Stopwatch();
-          }
-        }
-    } catch (const Stopped&) {
-      // The limit struck inside a manifold: it is dropped, the search runs on the rest. No
-      // round follows, so subspaces cut short never get out of step with the base angles.
-    }
-    Stopwatch search;
-    const auto nodes = graph_.path(size_t(from), size_t(to));
-    stats_.searchSeconds += search.seconds();
-    if (nodes) {
-      CertifiedMotion m = certifiedMotion(scene_, checker_, graph_, subspaces_, *nodes, rng_,
-                                          {settings_.shortcutAttempts, /*oneRobotAtATime=*/true});
-      stats_.motionSeconds += m.buildSeconds;
-      stats_.shortcutSeconds += m.shortcutSeconds;
-      stats_.certifySeconds += m.certifySeconds;
-      result.certificate = m.certificate;
-      if (m.ok) {
-        stats_.pathCells = nodes->size();
-        const auto used = graph_.footprint(*nodes);
-        stats_.pathManifolds = used.manifolds;
-        stats_.pathSubspaces = used.subspaces;
-        result.waypoints = std::move(m.waypoints);
-        return finish(result, MmsResult::Status::Found);
+  // The robots take turns, so both families grow before start and goal connect.
+  std::array<bool, 2> exhausted{false, false};
+  auto wants = [&](size_t r) { return !exhausted[r] && stats_.fixings[r] < target + 2; };
+  RoundHooks h;
+  h.begin = [&] { exhausted = {false, false}; };
+  h.growing = [&] { return wants(0) || wants(1); };
+  h.complete = [&] { return stats_.fixings[0] >= target + 2 && stats_.fixings[1] >= target + 2; };
+  h.grow = [&] {
+    for (size_t r = 0; r < 2 && !stop(); ++r) {
+      if (!wants(r)) continue;
+      if (!grow(r, stop)) exhausted[r] = true;
+      sliceNarrowArcsIfDisconnected();
+      if (progress && sinceReport.seconds() >= 1.0) {
+        progress(finish(result, MmsResult::Status::NotFound).stats);
+        sinceReport = Stopwatch();
       }
-      ++stats_.rejectedPaths;
-      sliceNarrowArcsNow();
     }
+  };
+  h.motion = [&](const std::vector<size_t>& nodes) {
+    return certifiedMotion(scene_, checker_, graph_, subspaces_, nodes, rng_,
+                           {settings_.shortcutAttempts, /*oneRobotAtATime=*/true});
+  };
+  h.refused = [&] { sliceNarrowArcsNow(); };
+  h.report = [&] {
     if (progress) progress(finish(result, MmsResult::Status::NotFound).stats);
-    if (stop())
-      return finish(result,
-                    stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
-    if (searchEarly && (stats_.fixings[0] < target + 2 || stats_.fixings[1] < target + 2)) {
-      searchEarly = false;  // a refused candidate ended the round early: complete it
-      continue;
-    }
-    if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds)
-      return finish(result, MmsResult::Status::NotFound);
-    searchEarly = true;
-    ++stats_.rounds;
+  };
+  h.next = [&] {
+    if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds) return false;
     // Grow both the fixings and the angle sets: a narrow passage may need the two robots'
     // angles closer than the current sets offer (the Pacman's mouth and the square).
     target *= 2;
@@ -317,7 +289,20 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
         sequenceAngles_[r] *= 2;
         addAngles(r, thetas, stop);
       }
+    return true;
+  };
+  RoundsOutcome o = runRounds(h, graph_, size_t(from), size_t(to), stop, stats_);
+  result.certificate = o.motion.certificate;
+  if (o.end == RoundsOutcome::End::Found) {
+    stats_.pathCells = o.nodes.size();
+    const auto used = graph_.footprint(o.nodes);
+    stats_.pathManifolds = used.manifolds;
+    stats_.pathSubspaces = used.subspaces;
+    result.waypoints = std::move(o.motion.waypoints);
+    return finish(result, MmsResult::Status::Found);
   }
+  return finish(result, o.end == RoundsOutcome::End::Cancelled ? MmsResult::Status::Cancelled
+                                                               : MmsResult::Status::NotFound);
 }
 
 }  // namespace mms

@@ -2,7 +2,7 @@
 // Deterministic scene generators (same seed, same scene).
 #include <cstdint>
 
-#include "scene/Scene.h"
+#include "mms/Scene.h"
 #include "util/Random.h"
 
 namespace mms {

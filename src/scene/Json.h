@@ -4,8 +4,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "geometry/Vec2.h"
-#include "scene/Errors.h"
+#include "mms/Errors.h"
+#include "mms/Geometry.h"
 
 namespace mms::json_in {
 

@@ -5,7 +5,7 @@
 // as wide as a robot. Start and goal are free; whether a path exists is not known.
 #include <cstdint>
 
-#include "scene/Scene.h"
+#include "mms/Scene.h"
 
 namespace mms {
 

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "scene/Scene.h"
+#include "mms/Scene.h"
 
 namespace mms {
 

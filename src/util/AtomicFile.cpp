@@ -7,7 +7,7 @@
 #include <cstring>
 #include <string>
 
-#include "scene/Errors.h"
+#include "mms/Errors.h"
 
 namespace mms {
 

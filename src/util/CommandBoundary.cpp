@@ -6,7 +6,7 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "scene/Errors.h"
+#include "mms/Errors.h"
 #include "util/Interrupt.h"
 
 namespace mms {

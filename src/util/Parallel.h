@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "util/Termination.h"
+#include "mms/Termination.h"
 
 namespace mms {
 

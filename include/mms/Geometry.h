@@ -1,6 +1,6 @@
 #pragma once
-// Plain double-precision geometry values shared by every stage. Exact (CGAL) types live in
-// Exact.h; conversions between the two worlds are there too.
+// Plain double-precision geometry values shared by every stage and the public API. The exact
+// types stay inside the library (src/geometry/Exact.h), with the conversions between the two.
 #include <cmath>
 #include <vector>
 

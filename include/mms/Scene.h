@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/Vec2.h"
+#include "mms/Geometry.h"
 
 namespace mms {
 

@@ -32,8 +32,8 @@ class Termination {
 /// Thrown by checkpoint() once the termination condition of the enclosing StopScope holds.
 struct Stopped {};
 
-/// One exact manifold among thousands of obstacles takes seconds inside CGAL calls that no
-/// Termination reaches. A planner's solve() opens a StopScope; that work calls checkpoint()
+/// One exact manifold among thousands of obstacles takes seconds inside exact-geometry calls that
+/// no Termination reaches. A planner's solve() opens a StopScope; that work calls checkpoint()
 /// between its steps, which throws Stopped once the scope's condition holds, and solve() drops
 /// the unfinished manifold. Per thread: a thread that builds manifolds opens its own scope.
 class StopScope {

@@ -1,0 +1,19 @@
+#pragma once
+// The registry's entries, one function per planner family: to add a planner, write its adapter
+// (a class derived from mms::Planner) and its PlannerInfo, and list it in Registry.cpp.
+#include <string>
+#include <vector>
+
+#include "mms/Planner.h"
+
+namespace mms {
+
+/// "mms": MMS for one robot (MmsPlanner) or two (TwoRobotPlanner), chosen by the scene.
+PlannerInfo mmsPlannerInfo();
+/// OMPL 1.5.2's planners with mms's collision checker and continuous certification.
+std::vector<PlannerInfo> omplPlannerInfos();
+
+/// A parameter's value: the one given, or the default declared in `spec`.
+double paramValue(const PlannerParams& params, const ParamSpec& spec);
+
+}  // namespace mms

@@ -1,0 +1,235 @@
+// "mms" behind the planner seam: MmsPlanner for one robot, TwoRobotPlanner for two, chosen by
+// the scene. Parameters are declared here once, with the defaults of the settings structs.
+#include <memory>
+#include <type_traits>
+
+#include "api/Adapters.h"
+#include "mms/Errors.h"
+#include "planner/MmsPlanner.h"
+#include "planner/TwoRobotPlanner.h"
+#include "util/Parallel.h"
+
+namespace mms {
+
+namespace {
+
+using Type = ParamSpec::Type;
+
+PlanStatus statusOf(MmsResult::Status s) {
+  switch (s) {
+    case MmsResult::Status::Found:
+      return PlanStatus::Found;
+    case MmsResult::Status::Cancelled:
+      return PlanStatus::Cancelled;
+    case MmsResult::Status::NotFound:
+      break;
+  }
+  return PlanStatus::NotFound;
+}
+
+// What both MMS planners report alike: the sizes, the manifolds' cells and arcs, and the
+// phases from the lines on. `first` are the phases before those (how slices are built).
+template <class Stats>
+PlanStatistics commonStatistics(const Stats& s, std::vector<std::pair<std::string, double>> first) {
+  PlanStatistics p;
+  const SubspaceStats& m = s.manifolds;
+  p.seconds = s.totalSeconds;
+  p.rounds = s.rounds;
+  p.graphNodes = s.graphNodes;
+  p.graphEdges = s.graphEdges;
+  p.manifoldsBuilt = m.slices + m.lines;
+  p.manifoldsUsed = s.pathManifolds;
+  p.pathCells = s.pathCells;
+  p.rejectedPaths = s.rejectedPaths;
+  p.counts = {{"slices", m.slices},
+              {"slice_cells", m.sliceCells},
+              {"lines", m.lines},
+              {"line_arcs", m.lineArcs}};
+  p.phases = std::move(first);
+  for (const auto& phase : {std::pair<const char*, double>{"lines", m.lineSeconds},
+                            {"connect", m.connectSeconds},
+                            {"search", s.searchSeconds},
+                            {"motion", s.motionSeconds},
+                            {"shortcut", s.shortcutSeconds},
+                            {"certify", s.certifySeconds}})
+    p.phases.emplace_back(phase);
+  return p;
+}
+
+PlanStatistics statisticsOf(const MmsStats& s) {
+  return commonStatistics(s, {{"slices", s.manifolds.sliceSeconds}});
+}
+
+PlanStatistics statisticsOf(const TwoRobotStats& s) {
+  PlanStatistics p = commonStatistics(
+      s, {{"base_slices", s.baseSliceSeconds}, {"overlays", s.manifolds.sliceSeconds}});
+  p.counts.insert(p.counts.begin(), {{"subspaces", s.subspaces},
+                                     {"fixings_0", s.fixings[0]},
+                                     {"fixings_1", s.fixings[1]},
+                                     {"expanded_fixings", s.expandedFixings},
+                                     {"narrow_arc_slices", s.manifolds.localSlices},
+                                     {"cross_edges", s.crossEdges},
+                                     {"path_subspaces", s.pathSubspaces}});
+  p.phases.insert(p.phases.begin() + 4, {"cross", s.crossSeconds});  // after connect
+  return p;
+}
+
+// An MMS result (MmsResult, TwoRobotResult) as the seam's result.
+template <class Result>
+PlanResult planResultOf(const Result& r, const std::map<std::string, double>& parameters) {
+  PlanResult out;
+  out.status = statusOf(r.status);
+  out.waypoints = r.waypoints;
+  out.certificate = r.certificate;
+  out.stats = statisticsOf(r.stats);
+  out.parameters = parameters;
+  return out;
+}
+
+// The seam's progress callback as an MMS planner's.
+template <class Stats>
+std::function<void(const Stats&)> progressOf(const Planner::Progress& progress) {
+  if (!progress) return {};
+  return [&progress](const Stats& s) { progress(statisticsOf(s)); };
+}
+
+// The declared parameters, in the order --help shows them.
+enum Param { kThreads, kNTheta, kNLines, kNFixings, kExpandShare };
+
+std::vector<ParamSpec> mmsParams() {
+  const MmsSettings one;
+  const TwoRobotSettings two;
+  auto both = [](double a, double b) {
+    return a == b ? formatNumber(a)
+                  : formatNumber(a) + " for one robot, " + formatNumber(b) + " for two";
+  };
+  return {
+      {"threads", Type::Integer, 0, 256, double(one.threads),
+       "Threads that build slices (0: all cores); same seed, same path whatever the number "
+       "(default " +
+           formatNumber(one.threads) + ")"},
+      {"n-theta", Type::Integer, 1, 1e6, double(one.nTheta),
+       "Angles sampled per robot (n_theta). One robot: slices in the first round, doubling each "
+       "round. Two robots: each robot's angle set (default " +
+           both(double(one.nTheta), double(two.nTheta)) + ")"},
+      {"n-lines", Type::Integer, 1, 1e7, double(one.nLines),
+       "Lines (fixed positions, n_l). One robot: in the first round, doubling each round. Two "
+       "robots: per subspace (default " +
+           both(double(one.nLines), double(two.nLines)) + ")"},
+      {"n-fixings", Type::Integer, 1, 1e6, double(two.nFixings),
+       "Two robots: fixings per robot in the first round (n_f), doubling each round (default " +
+           formatNumber(double(two.nFixings)) + ")"},
+      {"expand-share", Type::Real, 0, 1, two.expandShare,
+       "Two robots: share of fixings drawn from free-space cells already reached from the start "
+       "or goal; the rest are uniform (default " +
+           formatNumber(two.expandShare) + ")"},
+  };
+}
+
+unsigned threadsOf(double v) { return v == 0 ? hardwareThreads() : unsigned(v); }
+
+class OneRobotMms : public Planner {
+ public:
+  OneRobotMms(const Scene& scene, const MmsSettings& settings, bool picture,
+              std::map<std::string, double> parameters)
+      : planner_(scene, 0, settings),
+        start_(scene.robots[0].start),
+        goal_(scene.robots[0].goal),
+        picture_(picture),
+        parameters_(std::move(parameters)) {}
+
+  PlanResult solve(const Termination& stop, const Progress& progress) override {
+    const MmsResult r = planner_.solve(start_, goal_, stop, progressOf<MmsStats>(progress));
+    PlanResult out = planResultOf(r, parameters_);
+    if (picture_ && out.found()) {
+      for (const ConnectivityGraph::Node& n : r.cells)
+        if (n.kind == ConnectivityGraph::Kind::SliceCell)
+          out.roadmap.cells.push_back(planner_.slices()[n.manifold].cell(n.cell));
+      for (const Line& l : planner_.lines()) out.roadmap.points.push_back(l.point());
+    }
+    return out;
+  }
+
+  bool setQuery(const Config& start, const Config& goal) override {
+    start_ = poseOf(start, 0);
+    goal_ = poseOf(goal, 0);
+    return true;
+  }
+
+ private:
+  MmsPlanner planner_;
+  Pose start_, goal_;
+  bool picture_;
+  std::map<std::string, double> parameters_;
+};
+
+class TwoRobotMms : public Planner {
+ public:
+  TwoRobotMms(const Scene& scene, const TwoRobotSettings& settings,
+              std::map<std::string, double> parameters)
+      : planner_(scene, settings), parameters_(std::move(parameters)) {}
+
+  PlanResult solve(const Termination& stop, const Progress& progress) override {
+    return planResultOf(planner_.solve(stop, progressOf<TwoRobotStats>(progress)), parameters_);
+  }
+
+ private:
+  TwoRobotPlanner planner_;
+  std::map<std::string, double> parameters_;
+};
+
+// The settings both MMS planners share, from the parameters given (the rest keep the struct's
+// defaults).
+template <class Settings>
+Settings settingsFrom(const PlannerParams& params, const std::vector<ParamSpec>& specs) {
+  Settings s;
+  auto given = [&](Param p) { return params.values.count(specs[p].name) > 0; };
+  s.seed = params.seed;
+  s.threads = threadsOf(paramValue(params, specs[kThreads]));
+  if (given(kNTheta)) s.nTheta = size_t(paramValue(params, specs[kNTheta]));
+  if (given(kNLines)) s.nLines = size_t(paramValue(params, specs[kNLines]));
+  if constexpr (std::is_same_v<Settings, TwoRobotSettings>) {
+    if (given(kNFixings)) s.nFixings = size_t(paramValue(params, specs[kNFixings]));
+    if (given(kExpandShare)) s.expandShare = paramValue(params, specs[kExpandShare]);
+  }
+  return s;
+}
+
+std::unique_ptr<Planner> makeMms(const Scene& scene, const PlannerParams& params,
+                                 const std::string& source) {
+  const std::vector<ParamSpec> specs = mmsParams();
+  if (scene.robots.size() == 1) {
+    const auto s = settingsFrom<MmsSettings>(params, specs);
+    return std::make_unique<OneRobotMms>(
+        scene, s, params.roadmapPicture,
+        std::map<std::string, double>{{"n_theta", double(s.nTheta)},
+                                      {"n_lines", double(s.nLines)}});
+  }
+  if (scene.robots.size() == 2) {
+    const auto s = settingsFrom<TwoRobotSettings>(params, specs);
+    return std::make_unique<TwoRobotMms>(
+        scene, s,
+        std::map<std::string, double>{{"n_theta", double(s.nTheta)},
+                                      {"n_lines", double(s.nLines)},
+                                      {"n_fixings", double(s.nFixings)},
+                                      {"expand_share", s.expandShare}});
+  }
+  throw InputError(source + ": robots: " + std::to_string(scene.robots.size()) +
+                   " robots; the mms planner handles scenes with one or two robots");
+}
+
+}  // namespace
+
+PlannerInfo mmsPlannerInfo() {
+  PlannerInfo info;
+  info.name = "mms";
+  info.summary =
+      "Motion planning via manifold samples: exact fixed-angle slices and fixed-position lines "
+      "(one robot), recursive MMS over fixings (two robots)";
+  info.params = mmsParams();
+  info.multiQuery = true;
+  info.make = makeMms;
+  return info;
+}
+
+}  // namespace mms

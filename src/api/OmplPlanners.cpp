@@ -1,0 +1,130 @@
+// OMPL's planners behind the planner seam: each name one registry entry, with only the
+// parameters that planner reads.
+#include <memory>
+
+#include "api/Adapters.h"
+#include "baselines/OmplPlanner.h"
+
+namespace mms {
+
+namespace {
+
+using Type = ParamSpec::Type;
+
+class OmplAdapter : public Planner {
+ public:
+  OmplAdapter(const Scene& scene, OmplSettings settings, std::map<std::string, double> parameters)
+      : scene_(scene), settings_(std::move(settings)), parameters_(std::move(parameters)) {}
+
+  PlanResult solve(const Termination& stop, const Progress&) override {
+    const OmplResult r = planWithOmpl(scene_, settings_, stop);
+    PlanResult out;
+    out.status = r.status == OmplResult::Status::Found         ? PlanStatus::Found
+                 : r.status == OmplResult::Status::Uncertified ? PlanStatus::Uncertified
+                 : stop.cancelled()                            ? PlanStatus::Cancelled
+                                                               : PlanStatus::NotFound;
+    out.waypoints = r.waypoints;
+    out.certificate = r.certificate;
+    out.stats.seconds = r.seconds;
+    out.stats.graphNodes = r.states;
+    out.stats.counts = {{"states", r.states}};
+    out.stats.phases = {{"solve", r.seconds}};
+    out.parameters = parameters_;
+    return out;
+  }
+
+ private:
+  Scene scene_;
+  OmplSettings settings_;
+  std::map<std::string, double> parameters_;
+};
+
+struct Entry {
+  const char* name;
+  const char* summary;
+  bool range, neighbours, segment;  // which of the optional parameters it reads
+};
+
+}  // namespace
+
+std::vector<PlannerInfo> omplPlannerInfos() {
+  const OmplSettings d;
+  const ParamSpec resolution{
+      "resolution",
+      Type::Real,
+      1e-7,
+      0.5,
+      d.resolution,
+      "OMPL planners: motion-check resolution, a fraction of the state space's extent (default " +
+          formatNumber(d.resolution) + ")"};
+  const ParamSpec range{"range",
+                        Type::Real,
+                        0,
+                        1e9,
+                        d.range,
+                        "OMPL tree planners and LazyPRM: maximum motion length (0: OMPL's "
+                        "default)"};
+  const ParamSpec k{"k",
+                    Type::Integer,
+                    0,
+                    100000,
+                    double(d.neighbours),
+                    "OMPL PRM family: nearest neighbours per milestone (0: OMPL's default)"};
+  const ParamSpec segment{"segment-factor",
+                          Type::Real,
+                          1,
+                          1e6,
+                          d.segmentFactor,
+                          "U-OB-PRM: segment length l in units of the resolution (default " +
+                              formatNumber(d.segmentFactor) + ")"};
+  const ParamSpec simplify{
+      "simplify", Type::Flag,         0,
+      1,          double(d.simplify), "OMPL planners: run OMPL's path simplifier on the solution"};
+  const Entry entries[] = {
+      {"prm", "OMPL PRM (uniform samples)", false, true, false},
+      {"obprm", "OMPL PRM with OMPL's obstacle-based sampler", false, true, false},
+      {"uobprm", "PRM with the uniform obstacle-based sampler (U-OB-PRM)", false, true, true},
+      {"prm-bridge", "OMPL PRM with the bridge-test sampler", false, true, false},
+      {"prm-gaussian", "OMPL PRM with the Gaussian sampler", false, true, false},
+      {"rrt", "OMPL RRT", true, false, false},
+      {"rrtconnect", "OMPL RRT-Connect", true, false, false},
+      {"kpiece", "OMPL KPIECE1", true, false, false},
+      {"bkpiece", "OMPL BKPIECE1", true, false, false},
+      {"lazyprm", "OMPL LazyPRM", true, false, false},
+  };
+  std::vector<PlannerInfo> out;
+  for (const Entry& e : entries) {
+    PlannerInfo info;
+    info.name = e.name;
+    info.summary = e.summary;
+    info.params = {resolution};
+    if (e.range) info.params.push_back(range);
+    if (e.neighbours) info.params.push_back(k);
+    if (e.segment) info.params.push_back(segment);
+    info.params.push_back(simplify);
+    const std::string name = e.name;
+    const std::vector<ParamSpec> specs = info.params;
+    info.make = [name, specs](const Scene& scene, const PlannerParams& params,
+                              const std::string&) -> std::unique_ptr<Planner> {
+      OmplSettings s;
+      s.planner = name;
+      s.seed = params.seed;
+      s.keepUntilExit = params.exitsAfterRun;
+      std::map<std::string, double> used;
+      for (const ParamSpec& spec : specs) {
+        const double v = paramValue(params, spec);
+        used[spec.key()] = v;
+        if (spec.name == "resolution") s.resolution = v;
+        if (spec.name == "range") s.range = v;
+        if (spec.name == "k") s.neighbours = unsigned(v);
+        if (spec.name == "segment-factor") s.segmentFactor = v;
+        if (spec.name == "simplify") s.simplify = v != 0;
+      }
+      return std::make_unique<OmplAdapter>(scene, s, std::move(used));
+    };
+    out.push_back(std::move(info));
+  }
+  return out;
+}
+
+}  // namespace mms

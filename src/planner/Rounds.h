@@ -1,0 +1,82 @@
+#pragma once
+// The anytime round loop of every MMS planner: grow manifolds until the round's targets are
+// met or start and goal connect (the graph keeps a union-find, so the search can run early),
+// search the connectivity graph, and turn the graph path into a certified motion. A candidate
+// the checker refuses sends the loop back to complete the round; a complete round without a
+// certified motion doubles the targets (Salzman, Hemmer, Halperin, Algorithm 1, with the
+// search run as soon as start and goal connect). The planners supply what differs as hooks.
+#include <functional>
+#include <vector>
+
+#include "graph/ConnectivityGraph.h"
+#include "mms/Termination.h"
+#include "planner/Motion.h"
+
+namespace mms {
+
+struct RoundHooks {
+  std::function<void()> begin = [] {};  // before each stretch of growth
+  std::function<bool()> growing;        // whether growth goes on in this stretch
+  std::function<void()> grow;           // builds the next manifolds
+  std::function<bool()> complete;       // the round's targets are met
+  std::function<CertifiedMotion(const std::vector<size_t>& nodes)> motion;
+  std::function<void()> refused = [] {};  // after the checker refused a candidate
+  std::function<void()> report = [] {};   // after each search
+  std::function<bool()> next;             // doubles the targets for the next round; false: give up
+};
+
+struct RoundsOutcome {
+  enum class End { Found, NotFound, Cancelled } end = End::NotFound;
+  std::vector<size_t> nodes;  // the graph path of the certified motion
+  CertifiedMotion motion;     // the last candidate (certified when Found)
+};
+
+/// `Stats` holds the counters every MMS planner reports: rounds, rejectedPaths and the
+/// seconds of search, motion, shortcut and certify.
+template <class Stats>
+RoundsOutcome runRounds(const RoundHooks& h, const ConnectivityGraph& graph, size_t from, size_t to,
+                        const Termination& stop, Stats& stats) {
+  RoundsOutcome out;
+  // After a candidate the checker refused, the round is completed before the next search.
+  bool searchEarly = true;
+  ++stats.rounds;
+  while (true) {
+    try {
+      h.begin();
+      while (h.growing() && !stop() && !(searchEarly && graph.connected(from, to))) h.grow();
+    } catch (const Stopped&) {
+      // The limit struck inside a manifold: it is dropped, the search runs on the rest. No
+      // round follows, so manifolds cut short never get out of step with the others.
+    }
+    Stopwatch search;
+    const auto nodes = graph.path(from, to);
+    stats.searchSeconds += search.seconds();
+    if (nodes) {
+      out.motion = h.motion(*nodes);
+      stats.motionSeconds += out.motion.buildSeconds;
+      stats.shortcutSeconds += out.motion.shortcutSeconds;
+      stats.certifySeconds += out.motion.certifySeconds;
+      if (out.motion.ok) {
+        out.nodes = *nodes;
+        out.end = RoundsOutcome::End::Found;
+        return out;
+      }
+      ++stats.rejectedPaths;
+      h.refused();
+    }
+    h.report();
+    if (stop()) {
+      out.end = stop.cancelled() ? RoundsOutcome::End::Cancelled : RoundsOutcome::End::NotFound;
+      return out;
+    }
+    if (searchEarly && !h.complete()) {
+      searchEarly = false;  // a refused candidate ended the round early: complete it
+      continue;
+    }
+    if (!h.next()) return out;
+    searchEarly = true;
+    ++stats.rounds;
+  }
+}
+
+}  // namespace mms
