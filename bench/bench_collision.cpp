@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "geometry/CollisionChecker.h"
-#include "scene/Generators.h"
-#include "scene/SceneIO.h"
+#include "scenarios/Generators.h"
+#include "io/SceneIO.h"
 
 using namespace mms;
 

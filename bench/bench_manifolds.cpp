@@ -8,8 +8,8 @@
 #include "manifolds/Line.h"
 #include "manifolds/Slice.h"
 #include "planner/MmsPlanner.h"
-#include "scene/Generators.h"
-#include "scene/SceneIO.h"
+#include "scenarios/Generators.h"
+#include "io/SceneIO.h"
 
 using namespace mms;
 

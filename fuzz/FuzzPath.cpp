@@ -5,9 +5,9 @@
 #include <string>
 
 #include "FuzzSupport.h"
-#include "scene/Json.h"
-#include "scene/PathIO.h"
-#include "scene/SceneIO.h"
+#include "io/Json.h"
+#include "io/PathIO.h"
+#include "io/SceneIO.h"
 
 namespace {
 

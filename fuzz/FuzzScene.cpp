@@ -7,8 +7,8 @@
 #include <string>
 
 #include "FuzzSupport.h"
-#include "scene/Json.h"
-#include "scene/SceneIO.h"
+#include "io/Json.h"
+#include "io/SceneIO.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace mms;

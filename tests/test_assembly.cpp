@@ -9,10 +9,11 @@
 #include "Support.h"
 #include "assembly/Disassembly.h"
 #include "graph/ConnectivityGraph.h"
+#include "io/PathIO.h"
+#include "io/SceneIO.h"
 #include "manifolds/CellSampling.h"
 #include "planner/TwoRobotPlanner.h"
-#include "scene/Generators.h"
-#include "scene/SceneIO.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 using namespace mms::test;
@@ -151,9 +152,7 @@ TEST(Assembly, HookedPartsClimbOutInAlternation) {
     st.seed = uint64_t(seed);
     const TwoRobotResult r = TwoRobotPlanner(s, st).solve(Termination(planSeconds(60)));
     ASSERT_EQ(r.status, MmsResult::Status::Found) << "seed " << seed;
-    Path p;
-    p.waypoints = r.waypoints;
-    EXPECT_TRUE(checkPath(s, checker, p).ok);
+    EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
     // The climb is 2.2 and each turn gains at most 2 * 0.05.
     EXPECT_GE(alternations(r.waypoints), 21) << "seed " << seed;
   }
@@ -166,9 +165,7 @@ TEST(Assembly, MixedRigidAndTranslatingRobots) {
   TwoRobotSettings st;
   const TwoRobotResult r = TwoRobotPlanner(s, st).solve(Termination(planSeconds(60)));
   ASSERT_EQ(r.status, MmsResult::Status::Found);
-  Path p;
-  p.waypoints = r.waypoints;
-  EXPECT_TRUE(checkPath(s, checker, p).ok);
+  EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
   for (const Config& q : r.waypoints) EXPECT_EQ(q[5], 0.0);
 }
 

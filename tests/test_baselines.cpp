@@ -6,8 +6,8 @@
 #include "Support.h"
 #include "baselines/OmplPlanner.h"
 #include "baselines/UobprmSampler.h"
+#include "io/SceneIO.h"
 #include "mms/Planner.h"
-#include "scene/SceneIO.h"
 
 using namespace mms;
 using namespace mms::test;
@@ -30,9 +30,7 @@ TEST(Ompl, EveryPlannerRunsAndOnlyCertifiedPathsAreFound) {
     EXPECT_LT(r.seconds, planSeconds(2.0) + 1.0) << name;  // the termination condition is honoured
     if (r.status == OmplResult::Status::Found) {
       ++found;
-      Path p;
-      p.waypoints = r.waypoints;
-      EXPECT_TRUE(checkPath(s, checker, p).ok) << name;
+      EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << name;
     } else {
       EXPECT_TRUE(r.waypoints.empty()) << name;
     }
@@ -58,9 +56,7 @@ TEST(Ompl, CoarseResolutionPathsAreCheckedNotTrusted) {
       EXPECT_NE(r.certificate.reason.find("hits"), std::string::npos) << r.certificate.reason;
     }
     if (r.status == OmplResult::Status::Found) {
-      Path p;
-      p.waypoints = r.waypoints;
-      EXPECT_TRUE(checkPath(s, checker, p).ok);
+      EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
     }
   }
   EXPECT_GT(uncertified, 0);

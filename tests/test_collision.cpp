@@ -7,8 +7,8 @@
 #include "geometry/CollisionChecker.h"
 #include "geometry/Exact.h"
 #include "geometry/PolygonOps.h"
-#include "scene/Generators.h"
-#include "scene/SceneIO.h"
+#include "io/SceneIO.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 

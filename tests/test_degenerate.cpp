@@ -16,11 +16,11 @@
 #include "check/PathChecker.h"
 #include "geometry/CollisionChecker.h"
 #include "geometry/PolygonOps.h"
+#include "io/SceneIO.h"
 #include "manifolds/Line.h"
 #include "manifolds/Slice.h"
 #include "planner/MmsPlanner.h"
-#include "scene/RandomScene.h"
-#include "scene/SceneIO.h"
+#include "scenarios/RandomScene.h"
 
 namespace mms {
 namespace {
@@ -124,9 +124,7 @@ TEST(Degenerate, TranslatingRobotPassesAGapExactlyItsWidthTouchingBothSides) {
   const MmsResult r = plan(s, test::planSeconds(10));
   ASSERT_EQ(r.status, MmsResult::Status::Found);
   const CollisionChecker checker(s);
-  Path path;
-  path.waypoints = r.waypoints;
-  const PathCheckResult c = checkPath(s, checker, path);
+  const PathCheckResult c = checkPath(s, checker, r.waypoints);
   EXPECT_TRUE(c.ok) << c.reason;
   EXPECT_LT(c.minClearance, s.tolerance());  // it touches: zero clearance, certified
 }
@@ -143,9 +141,7 @@ TEST(Degenerate, RigidRobotAtAnExactFitGapNeverReturnsAnUncertifiedPath) {
   if (r.status == MmsResult::Status::Found) {
     EXPECT_TRUE(r.certificate.ok);
     const CollisionChecker checker(s);
-    Path path;
-    path.waypoints = r.waypoints;
-    EXPECT_TRUE(checkPath(s, checker, path).ok);
+    EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
   } else {
     EXPECT_EQ(r.status, MmsResult::Status::NotFound);
   }
@@ -158,9 +154,7 @@ TEST(Degenerate, HundredsOfObstacles) {
   const MmsResult r = plan(s, test::planSeconds(3));
   if (r.status == MmsResult::Status::Found) {
     const CollisionChecker checker(s);
-    Path path;
-    path.waypoints = r.waypoints;
-    EXPECT_TRUE(checkPath(s, checker, path).ok);
+    EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
   }
 }
 

@@ -9,7 +9,7 @@
 #include "mms/Termination.h"
 #include "planner/MmsPlanner.h"
 #include "planner/TwoRobotPlanner.h"
-#include "scene/RandomScene.h"
+#include "scenarios/RandomScene.h"
 
 namespace mms {
 namespace {

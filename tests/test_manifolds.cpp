@@ -8,10 +8,10 @@
 #include "Support.h"
 #include "geometry/CollisionChecker.h"
 #include "geometry/PolygonOps.h"
+#include "io/SceneIO.h"
 #include "manifolds/Line.h"
 #include "manifolds/Slice.h"
-#include "scene/Generators.h"
-#include "scene/SceneIO.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 

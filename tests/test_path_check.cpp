@@ -6,7 +6,8 @@
 
 #include "Support.h"
 #include "check/PathChecker.h"
-#include "scene/SceneIO.h"
+#include "io/PathIO.h"
+#include "io/SceneIO.h"
 
 using namespace mms;
 using namespace mms::test;
@@ -24,7 +25,7 @@ PathCheckResult check(const Scene& s, const Path& p, size_t budget = 20'000'000)
   const CollisionChecker c(s);
   PathCheckSettings st;
   st.maxEvaluations = budget;
-  return checkPath(s, c, p, st);
+  return checkPath(s, c, p.waypoints, st);
 }
 
 const double kHalfPi = M_PI / 2;

@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "Support.h"
+#include "io/SceneIO.h"
 #include "planner/MmsPlanner.h"
-#include "scene/SceneIO.h"
 
 using namespace mms;
 using namespace mms::test;
@@ -31,10 +31,8 @@ TEST_P(SolvableScene, SolvedWithCertifiedPathsForSeveralSeeds) {
   for (uint64_t seed = 1; seed <= uint64_t(seedsToRun(4)); ++seed) {
     const MmsResult r = plan(s, seed, planSeconds(30));
     ASSERT_EQ(r.status, MmsResult::Status::Found) << GetParam() << " seed " << seed;
-    Path p;
-    p.waypoints = r.waypoints;
     // An independent check of what the planner returned.
-    const PathCheckResult c = checkPath(s, checker, p);
+    const PathCheckResult c = checkPath(s, checker, r.waypoints);
     EXPECT_TRUE(c.ok) << c.reason;
     EXPECT_GT(r.stats.manifolds.slices, 0u);
     EXPECT_GT(r.stats.graphEdges, 0u);

@@ -10,10 +10,10 @@
 #include "Support.h"
 #include "baselines/OmplPlanner.h"
 #include "check/PathChecker.h"
+#include "io/SceneIO.h"
 #include "planner/MmsPlanner.h"
 #include "planner/TwoRobotPlanner.h"
-#include "scene/RandomScene.h"
-#include "scene/SceneIO.h"
+#include "scenarios/RandomScene.h"
 
 namespace mms {
 namespace {
@@ -85,9 +85,7 @@ TEST_P(RandomScenes, EveryReportedPathIsCertifiedAndRunsEndInTime) {
       EXPECT_LT(run.seconds, allowed);
       if (!run.found) return;
       ++foundCount;
-      Path path;
-      path.waypoints = run.waypoints;
-      const PathCheckResult c = checkPath(scene, checker, path);
+      const PathCheckResult c = checkPath(scene, checker, run.waypoints);
       EXPECT_TRUE(c.ok) << "segment " << c.segment << " at " << c.parameter << ": " << c.reason;
     };
     PlanRun mms;

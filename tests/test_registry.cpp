@@ -5,12 +5,12 @@
 #include <set>
 
 #include "Support.h"
-#include "api/RunSummary.h"
+#include "io/RunSummary.h"
+#include "io/SceneIO.h"
 #include "mms/Errors.h"
 #include "mms/Io.h"
 #include "mms/Planner.h"
 #include "planner/Rounds.h"
-#include "scene/SceneIO.h"
 
 using namespace mms;
 using namespace mms::test;

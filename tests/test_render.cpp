@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "Support.h"
+#include "io/SceneIO.h"
 #include "render/SvgRenderer.h"
-#include "scene/SceneIO.h"
 
 using namespace mms;
 using namespace mms::test;

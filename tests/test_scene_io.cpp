@@ -8,9 +8,9 @@
 
 #include "Support.h"
 #include "geometry/PolygonOps.h"
+#include "io/PathIO.h"
+#include "io/SceneIO.h"
 #include "mms/Errors.h"
-#include "scene/PathIO.h"
-#include "scene/SceneIO.h"
 
 using nlohmann::json;
 using namespace mms;

@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "Support.h"
+#include "io/SceneIO.h"
 #include "planner/TwoRobotPlanner.h"
-#include "scene/Generators.h"
-#include "scene/SceneIO.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 using namespace mms::test;
@@ -43,15 +43,13 @@ TEST_P(TwoRobotScene, SolvedWithCertifiedPathsMovingOneRobotAtATime) {
   for (int seed = 1; seed <= seedsToRun(GetParam().seeds); ++seed) {
     const TwoRobotResult r = plan(s, uint64_t(seed));
     ASSERT_EQ(r.status, MmsResult::Status::Found) << GetParam().scene << " seed " << seed;
-    Path p;
-    p.waypoints = r.waypoints;
-    const PathCheckResult c = checkPath(s, checker, p);
+    const PathCheckResult c = checkPath(s, checker, r.waypoints);
     EXPECT_TRUE(c.ok) << c.reason;
-    for (size_t j = 1; j < p.waypoints.size(); ++j) {
+    for (size_t j = 1; j < r.waypoints.size(); ++j) {
       int moving = 0;
       for (size_t robot = 0; robot < 2; ++robot)
         for (size_t k = 3 * robot; k < 3 * robot + 3; ++k)
-          if (p.waypoints[j][k] != p.waypoints[j - 1][k]) {
+          if (r.waypoints[j][k] != r.waypoints[j - 1][k]) {
             ++moving;
             break;
           }
@@ -107,9 +105,7 @@ TEST(TwoRobots, NarrowArcSlicesOpenTheTightestPacman) {
         continue;
       }
       ASSERT_EQ(r.status, MmsResult::Status::Found) << "seed " << seed;
-      Path p;
-      p.waypoints = r.waypoints;
-      EXPECT_TRUE(checkPath(s, checker, p).ok);
+      EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
     }
   }
 }

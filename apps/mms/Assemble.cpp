@@ -6,10 +6,10 @@
 
 #include "Commands.h"
 #include "assembly/Disassembly.h"
+#include "io/PathIO.h"
+#include "io/SceneIO.h"
 #include "mms/Errors.h"
 #include "render/SvgRenderer.h"
-#include "scene/PathIO.h"
-#include "scene/SceneIO.h"
 #include "util/AtomicFile.h"
 #include "util/Interrupt.h"
 

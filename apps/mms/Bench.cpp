@@ -1,382 +1,49 @@
-// mms bench: planners x scenes x seeds, each run in its own process under a time and a memory
-// limit, results appended to runs.jsonl as they come (an interrupted benchmark keeps its data
-// and resumes), reports made from all runs of a folder.
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
+// mms bench and mms bench-merge: the command line over the library's benchmark runner.
 #include <unistd.h>
 
-#include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <set>
-#include <sstream>
-#include <thread>
 
 #include "Commands.h"
-#include "api/RunSummary.h"
-#include "bench/Report.h"
-#include "mms/Errors.h"
-#include "scene/Generators.h"
-#include "scene/Json.h"
-#include "scene/SceneIO.h"
-#include "util/AtomicFile.h"
+#include "bench/Runner.h"
 #include "util/Interrupt.h"
-#include "util/MemoryLimit.h"
-
-namespace fs = std::filesystem;
 
 namespace mms::cli {
 
 namespace {
 
-struct Job {
-  RunRecord record;
-  std::vector<std::string> args;  // mms plan ...
-  size_t cores = 1;
-};
-
 std::string selfExe() {
   std::error_code ec;
-  const fs::path p = fs::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path p = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (ec) throw std::runtime_error("cannot find the mms executable: " + ec.message());
   return p.string();
 }
 
-std::string group(const RunRecord& r) { return r.scene + "|" + r.planner + "|" + r.parameters; }
-std::string key(const RunRecord& r) { return group(r) + "|" + std::to_string(r.seed); }
-
-// Cores a run keeps busy: its --threads (0: all), so that a two-thread MMS run fills --jobs 2
-// alone instead of sharing the cores with another run and reporting slower times.
-size_t coresOf(const std::vector<std::string>& args, size_t jobs) {
-  size_t cores = 1;
-  for (size_t i = 0; i < args.size(); ++i) {
-    std::string v;
-    if (args[i] == "--threads" && i + 1 < args.size())
-      v = args[i + 1];
-    else if (args[i].rfind("--threads=", 0) == 0)
-      v = args[i].substr(10);
-    else
-      continue;
-    try {
-      const long n = std::stol(v);
-      cores = n <= 0 ? std::thread::hardware_concurrency() : size_t(n);
-    } catch (const std::exception&) {
-      throw InputError("--param: --threads '" + v + "' is not a number");
-    }
-  }
-  return std::clamp<size_t>(cores, 1, jobs);
-}
-
-// Starts `mms plan` for a job; the child gets the memory limit and no terminal output.
-pid_t start(const std::string& exe, const Job& job, double memoryMb) {
-  const pid_t pid = fork();
-  if (pid != 0) return pid;
-  limitMemory(memoryMb);  // 0: no limit (e.g. sanitizer builds, which reserve terabytes)
-  const int null = open("/dev/null", O_WRONLY);
-  dup2(null, 1);
-  dup2(null, 2);
-  std::vector<char*> argv{const_cast<char*>(exe.c_str())};
-  for (const std::string& a : job.args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  execv(exe.c_str(), argv.data());
-  _exit(127);
-}
-
-void fillFromStats(RunRecord& r, const std::string& statsFile) {
-  std::ifstream in(statsFile);
-  if (!in) return;
-  try {
-    const RunSummary s = runSummaryFromJson(nlohmann::json::parse(in));
-    r.status = toString(s.status);
-    r.seconds = s.stats.seconds;
-    if (s.status == PlanStatus::Found) {
-      r.translation = s.certificate.translation;
-      r.rotation = s.certificate.rotation;
-    }
-    r.graphSize = s.stats.graphNodes;
-    r.manifoldsBuilt = s.stats.manifoldsBuilt;
-    r.manifoldsUsed = s.stats.manifoldsUsed;
-    r.detail = s.certificate.reason;
-  } catch (const std::exception&) {
-    r.detail = "unreadable statistics";
-  }
-}
-
-void writeReports(const std::string& dir) {
-  std::vector<RunRecord> runs;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind("runs", 0) == 0 && e.path().extension() == ".jsonl") {
-      for (RunRecord& r : readRuns(e.path().string())) runs.push_back(std::move(r));
-    }
-  }
-  // Shards may overlap after a merge; keep the first record of each run.
-  std::set<std::string> seen;
-  std::vector<RunRecord> unique;
-  for (RunRecord& r : runs)
-    if (seen.insert(key(r)).second) unique.push_back(std::move(r));
-  const std::vector<Summary> summaries = summarize(unique);
-  std::vector<Summary> swept, fixed;
-  for (const Summary& s : summaries) (s.tightness >= 0 ? swept : fixed).push_back(s);
-  std::string md = "# mms bench results\n\n" + std::to_string(unique.size()) +
-                   " runs. Times are planning times as each planner measures them; mean and stdev "
-                   "over solved runs "
-                   "without the fastest and the slowest, median over all runs (an unsolved run "
-                   "counts as infinite).\n\n";
-  md +=
-      "## MMS against the best other planner\n\n" + speedupReport(summaries) + "\n## All runs\n\n";
-  md += markdownReport(fixed, "");
-  if (!swept.empty()) {
-    md += "\n## Tightness sweep\n\n" + markdownReport(swept, "") +
-          "\n![time vs tightness](tightness.svg)\n";
-    writeFileAtomically(dir + "/tightness.svg",
-                        tightnessPlot(swept, "Pacman: planning time vs tightness"));
-  }
-  writeFileAtomically(dir + "/report.md", md);
-  writeFileAtomically(dir + "/results.csv", csvReport(unique));
-  fs::create_directories(dir + "/ompl");
-  char host[256] = "unknown";
-  gethostname(host, sizeof host - 1);
-  for (const auto& [scene, log] : omplLogs(unique, host))
-    writeFileAtomically(dir + "/ompl/" + scene + ".log", log);
-}
-
 }  // namespace
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, sep);)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
 int bench(const BenchArgs& a) {
-  fs::create_directories(a.output);
   if (a.reportOnly) {
-    writeReports(a.output);
+    std::filesystem::create_directories(a.output);
+    writeBenchReports(a.output);
     std::printf("%s: reports written\n", a.output.c_str());
     return 0;
   }
-  // Scenes: the files given, plus generated Pacman scenes for a tightness sweep.
-  struct SceneEntry {
-    std::string file, name;
-    double tightness;
-  };
-  std::vector<SceneEntry> scenes;
-  for (const std::string& f : a.scenes) scenes.push_back({f, readScene(f, true).name, -1});
-  if (!a.sweepPacman.empty()) {
-    fs::create_directories(a.output + "/scenes");
-    for (const std::string& t : split(a.sweepPacman, ',')) {
-      double tight;
-      try {
-        tight = std::stod(t);
-      } catch (const std::exception&) {
-        throw InputError("--sweep-pacman: '" + t + "' is not a number");
-      }
-      if (!(tight >= 0 && tight < 1))
-        throw InputError("--sweep-pacman: tightness " + t + " is not in [0, 1)");
-      const Scene s = pacmanScene(tight);
-      const std::string file = a.output + "/scenes/" + s.name + ".json";
-      saveScene(s, file);
-      scenes.push_back({file, s.name, tight});
-    }
-  }
-  for (SceneEntry& s : scenes)
-    if (s.name.empty()) s.name = fs::path(s.file).stem().string();
-  if (scenes.empty()) throw InputError("mms bench: no scenes (give scene files or --sweep-pacman)");
-
-  std::map<std::string, std::string> params;  // planner -> extra mms plan arguments
-  for (const std::string& p : a.params) {
-    const size_t eq = p.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw InputError("--param: expected PLANNER=ARGS, found '" + p + "'");
-    params[p.substr(0, eq)] = p.substr(eq + 1);
-  }
-
-  std::vector<Job> jobs;
-  size_t index = 0;
-  for (const SceneEntry& s : scenes)
-    for (const std::string& planner : a.planners)
-      for (uint64_t seed = 1; seed <= a.runs; ++seed, ++index) {
-        if (index % a.shardCount != a.shardIndex - 1) continue;
-        Job j;
-        j.record.scene = s.name;
-        j.record.sceneFile = s.file;
-        j.record.tightness = s.tightness;
-        j.record.planner = planner;
-        j.record.parameters = params.count(planner) ? params[planner] : "";
-        j.record.seed = seed;
-        j.record.timeLimit = a.timeLimit;
-        j.record.memoryLimitMb = a.memoryMb;
-        j.args = {"plan",
-                  s.file,
-                  "--planner",
-                  planner,
-                  "--seed",
-                  std::to_string(seed),
-                  "--time-limit",
-                  std::to_string(a.timeLimit),
-                  "-q"};
-        for (const std::string& extra : split(j.record.parameters, ' ')) j.args.push_back(extra);
-        j.cores = j.record.planner == "mms" ? coresOf(j.args, a.jobs) : 1;
-        jobs.push_back(std::move(j));
-      }
-
-  const std::string runsFile = a.output + "/" +
-                               (a.shardCount > 1 ? "runs-" + std::to_string(a.shardIndex) + "-of-" +
-                                                       std::to_string(a.shardCount) + ".jsonl"
-                                                 : "runs.jsonl");
-  std::set<std::string> done;
-  std::map<std::string, size_t> failures;  // per scene, planner and parameters
-  auto count = [&](const RunRecord& r) {
-    done.insert(key(r));
-    if (!r.solved()) ++failures[group(r)];
-  };
-  if (fs::exists(runsFile))
-    for (const RunRecord& r : readRuns(runsFile)) count(r);
-  // With --stop-decided, a group's median is decided as unsolved once this many runs failed
-  // (the median of N runs, unsolved ones infinite, is infinite from ceil(N / 2) failures on).
-  const size_t decided = (a.runs + 1) / 2;
-  std::ofstream out(runsFile, std::ios::app);
-  if (!out) throw InputError(runsFile + ": (output): cannot open for appending");
-
-  const std::string exe = selfExe();
-  const std::string tmp = a.output + "/tmp";
-  fs::create_directories(tmp);
-  const std::atomic<bool>& sigint = *sigintFlag();
-  bool childInterrupted = false;  // a run ended by Ctrl-C: the terminal's, reaching it first
-  auto interrupted = [&] { return sigint.load() || childInterrupted; };
-  struct Running {
-    Job job;
-    pid_t pid;
-    std::chrono::steady_clock::time_point started;
-    std::string stats;
-  };
-  std::vector<Running> running;
-  size_t next = 0, finished = 0, skipped = 0, notRun = 0, busy = 0;
-  const size_t total = jobs.size();
-  const double grace = std::max(5.0, 0.2 * a.timeLimit);
-  while ((next < jobs.size() || !running.empty()) && !interrupted()) {
-    // Runs start in list order, each when its cores are free.
-    while (next < jobs.size() && busy + jobs[next].cores <= a.jobs) {
-      Job job = jobs[next++];
-      if (done.count(key(job.record))) {
-        ++skipped;
-        continue;
-      }
-      if (a.stopDecided && failures[group(job.record)] >= decided) {
-        // Recorded, so that reports count it and a resumed benchmark does not run it.
-        RunRecord rec = job.record;
-        rec.status = "not_run";
-        rec.detail = "median decided: " + std::to_string(failures[group(rec)]) + " of " +
-                     std::to_string(a.runs) + " runs failed";
-        out << rec.toJson().dump() << "\n" << std::flush;
-        count(rec);
-        ++notRun;
-        continue;
-      }
-      busy += job.cores;
-      job.record.cores = job.cores;
-      job.record.startedAt =
-          std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
-              .count();
-      Running r{job, 0, std::chrono::steady_clock::now(),
-                tmp + "/run-" + std::to_string(next) + ".json"};
-      fs::remove(r.stats);
-      r.job.args.push_back("--stats-json");
-      r.job.args.push_back(r.stats);
-      r.pid = start(exe, r.job, a.memoryMb);
-      running.push_back(std::move(r));
-    }
-    if (running.empty()) break;
-    bool reaped = false;
-    for (size_t i = 0; i < running.size(); ++i) {
-      Running& r = running[i];
-      int status = 0;
-      struct rusage usage {};
-      const pid_t got = wait4(r.pid, &status, WNOHANG, &usage);
-      const double elapsed =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - r.started).count();
-      if (got == 0 && elapsed > a.timeLimit + grace) {
-        kill(r.pid, SIGKILL);
-        continue;  // reaped on a later pass
-      }
-      if (got != r.pid) continue;
-      // A run ended by Ctrl-C (exit 130, or SIGINT before it installed its handler) is not a
-      // result: it is left unrecorded, to run again on resume.
-      if ((WIFEXITED(status) && WEXITSTATUS(status) == 130) ||
-          (WIFSIGNALED(status) && WTERMSIG(status) == SIGINT)) {
-        childInterrupted = true;
-        busy -= r.job.cores;
-        running.erase(running.begin() + long(i));
-        reaped = true;
-        break;
-      }
-      RunRecord rec = r.job.record;
-      rec.wallSeconds = elapsed;
-      rec.peakMemoryMb = usage.ru_maxrss / 1024.0;
-      rec.status = "crashed";
-      if (WIFSIGNALED(status))
-        rec.detail = WTERMSIG(status) == SIGKILL ? "killed after the time limit"
-                                                 : "signal " + std::to_string(WTERMSIG(status));
-      if (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) rec.status = "killed";
-      if (WIFEXITED(status)) {
-        fillFromStats(rec, r.stats);
-        if (WEXITSTATUS(status) == 3)
-          rec.status = "crashed", rec.detail = "internal error or out of memory";
-      }
-      out << rec.toJson().dump() << "\n" << std::flush;
-      count(rec);
-      ++finished;
-      std::fprintf(stderr, "mms bench: [%zu/%zu] %s %s seed %llu: %s %.3f s\n",
-                   finished + skipped + notRun, total, rec.scene.c_str(), rec.planner.c_str(),
-                   (unsigned long long)rec.seed, rec.status.c_str(), rec.seconds);
-      fs::remove(r.stats);
-      busy -= r.job.cores;
-      running.erase(running.begin() + long(i));
-      reaped = true;
-      break;
-    }
-    if (!reaped) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  if (interrupted()) {
-    for (Running& r : running) kill(r.pid, SIGKILL);
-    for (Running& r : running) waitpid(r.pid, nullptr, 0);
+  BenchSettings s = a;
+  s.executable = selfExe();
+  const BenchOutcome o = runBenchmark(s, sigintFlag());
+  if (o.interrupted) {
     std::fprintf(stderr, "mms bench: interrupted; %zu runs recorded in %s (run again to resume)\n",
-                 finished, runsFile.c_str());
+                 o.finished, o.runsFile.c_str());
     return 130;
   }
-  fs::remove_all(tmp);
-  writeReports(a.output);
-  std::printf("%s: %zu runs (%zu already recorded", a.output.c_str(), finished, skipped);
-  if (notRun) std::printf(", %zu not run: their median was decided", notRun);
+  std::printf("%s: %zu runs (%zu already recorded", a.output.c_str(), o.finished, o.skipped);
+  if (o.notRun) std::printf(", %zu not run: their median was decided", o.notRun);
   std::printf("); report in %s/report.md\n", a.output.c_str());
   return 0;
 }
 
 int benchMerge(const std::vector<std::string>& dirs, const std::string& output) {
-  fs::create_directories(output);
-  std::set<std::string> seen;
-  std::string merged;
-  size_t n = 0;
-  for (const std::string& d : dirs) {
-    if (!fs::is_directory(d)) throw InputError(d + ": (file): not a benchmark folder");
-    for (const auto& e : fs::directory_iterator(d)) {
-      const std::string name = e.path().filename().string();
-      if (name.rfind("runs", 0) != 0 || e.path().extension() != ".jsonl") continue;
-      for (const RunRecord& r : readRuns(e.path().string()))
-        if (seen.insert(key(r)).second) merged += r.toJson().dump() + "\n", ++n;
-    }
-  }
-  writeFileAtomically(output + "/runs.jsonl", merged);
-  writeReports(output);
+  const size_t n = mergeBenchmarks(dirs, output);
   std::printf("%s: merged %zu runs from %zu folders\n", output.c_str(), n, dirs.size());
   return 0;
 }

@@ -5,15 +5,15 @@
 #include <stdexcept>
 
 #include "check/PathChecker.h"
-#include "import/AnyScene.h"
-#include "import/Discopygal.h"
+#include "io/AnyScene.h"
+#include "io/Discopygal.h"
+#include "io/PathIO.h"
+#include "io/SceneIO.h"
 #include "mms/Errors.h"
 #include "render/HtmlViewer.h"
 #include "render/SvgRenderer.h"
-#include "scene/Generators.h"
-#include "scene/PathIO.h"
-#include "scene/RandomScene.h"
-#include "scene/SceneIO.h"
+#include "scenarios/Generators.h"
+#include "scenarios/RandomScene.h"
 #include "util/AtomicFile.h"
 
 namespace mms::cli {
@@ -58,7 +58,7 @@ int check(const CheckArgs& a) {
   const CollisionChecker checker(scene);
   PathCheckSettings settings;
   settings.maxEvaluations = a.maxEvaluations;
-  const PathCheckResult r = checkPath(scene, checker, path, settings);
+  const PathCheckResult r = checkPath(scene, checker, path.waypoints, settings);
   const size_t segments = path.waypoints.size() - 1;
   if (!r.ok) {
     std::printf("%s: rejected: segment %zu (waypoint %zu to %zu) at s = %.6g: %s\n", a.path.c_str(),

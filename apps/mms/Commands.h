@@ -4,13 +4,11 @@
 #include <string>
 #include <vector>
 
+#include "bench/Runner.h"
 #include "mms/Planner.h"
 #include "mms/Scene.h"
 
 namespace mms::cli {
-
-/// "a,b,,c" -> {"a", "b", "c"}: the items of a separated list, empty ones dropped.
-std::vector<std::string> split(const std::string& s, char sep);
 
 /// A scene in any format mms reads (mms JSON, OMPL.app .cfg, discopygal JSON); what a
 /// conversion changed goes to stderr as "mms: note: ..." unless quiet.
@@ -45,12 +43,16 @@ int render(const RenderArgs& a);
 
 namespace mms::cli {
 
-struct PlanArgs {
+/// What plan and assemble share: a scene in, files out, under a seed and limits.
+struct RunArgs {
   std::string scene, output, svg;
   uint64_t seed = 1;
   double timeLimit = 60;
   double memoryMb = 0;  // 0: no limit
   bool quiet = false;
+};
+
+struct PlanArgs : RunArgs {
   bool svgRoadmap = false;   // draw line points and the path's slice cells
   bool saveRoadmap = false;  // keep them in the path file (for mms view)
   std::string queries;       // mms-queries/1 file: several queries on one roadmap
@@ -78,14 +80,8 @@ int scenario(const ScenarioArgs& a);
 
 namespace mms::cli {
 
-struct BenchArgs {
-  std::vector<std::string> scenes, planners, params;
-  std::string output, sweepPacman;
-  uint64_t runs = 12;
-  double timeLimit = 60, memoryMb = 4096;
-  size_t shardIndex = 1, shardCount = 1, jobs = 1;
+struct BenchArgs : BenchSettings {
   bool reportOnly = false;
-  bool stopDecided = false;  // skip a group's seeds once its median is decided as unsolved
 };
 int bench(const BenchArgs& a);
 int benchMerge(const std::vector<std::string>& dirs, const std::string& output);
@@ -94,12 +90,8 @@ int benchMerge(const std::vector<std::string>& dirs, const std::string& output);
 
 namespace mms::cli {
 
-struct AssembleArgs {
-  std::string scene, output, svg;
-  uint64_t seed = 1;
-  double timeLimit = 60;
-  double memoryMb = 0;  // 0: no limit
-  bool noPairs = false, quiet = false;
+struct AssembleArgs : RunArgs {
+  bool noPairs = false;
 };
 int assemble(const AssembleArgs& a);
 

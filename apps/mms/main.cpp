@@ -38,6 +38,22 @@ std::vector<std::pair<mms::ParamSpec, std::vector<std::string>>> declaredParams(
   return out;
 }
 
+CLI::Option* sceneArg(CLI::App* cmd, std::string& v, const std::string& help) {
+  return cmd->add_option("SCENE", v, help)->required();
+}
+CLI::Option* outputOption(CLI::App* cmd, std::string& v, const std::string& help) {
+  return cmd->add_option("-o,--output", v, help)->required();
+}
+CLI::Option* quietFlag(CLI::App* cmd, bool& v, const std::string& help) {
+  return cmd->add_flag("-q,--quiet", v, help);
+}
+CLI::Option* memoryLimitOption(CLI::App* cmd, double& v, const std::string& help) {
+  return cmd->add_option("--memory-limit", v, help)->capture_default_str()->check(memoryLimitMb);
+}
+CLI::Option* seedOption(CLI::App* cmd, uint64_t& v, const std::string& help) {
+  return cmd->add_option("--seed", v, help)->capture_default_str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -52,15 +68,15 @@ int main(int argc, char** argv) {
   ValidateArgs va;
   auto* validateCmd =
       app.add_subcommand("validate", "Load and validate a scene (mms-scene/1); print a summary");
-  validateCmd->add_option("SCENE", va.scene, "Scene file")->required();
-  validateCmd->add_flag("-q,--quiet", va.quiet, "Print nothing when valid");
+  sceneArg(validateCmd, va.scene, "Scene file");
+  quietFlag(validateCmd, va.quiet, "Print nothing when valid");
 
   CheckArgs ca;
   auto* checkCmd = app.add_subcommand(
       "check",
       "Certify a path (mms-path/1) as a continuous collision-free motion from start to goal.\n"
       "Exit 0 certified, 1 rejected (first failing segment, parameter and reason), 2 bad input");
-  checkCmd->add_option("SCENE", ca.scene, "Scene file")->required();
+  sceneArg(checkCmd, ca.scene, "Scene file");
   checkCmd->add_option("PATH", ca.path, "Path file")->required();
   checkCmd
       ->add_option("--max-evaluations", ca.maxEvaluations,
@@ -71,9 +87,9 @@ int main(int argc, char** argv) {
   RenderArgs ra;
   auto* renderCmd = app.add_subcommand(
       "render", "Draw a scene (and a path, animated) as SVG: start poses green, goal poses red");
-  renderCmd->add_option("SCENE", ra.scene, "Scene file")->required();
+  sceneArg(renderCmd, ra.scene, "Scene file");
   renderCmd->add_option("PATH", ra.path, "Path file to draw and animate");
-  renderCmd->add_option("-o,--output", ra.output, "SVG file to write")->required();
+  outputOption(renderCmd, ra.output, "SVG file to write");
   renderCmd->add_option("--width", ra.width, "Picture width in pixels")
       ->capture_default_str()
       ->check(CLI::Range(50.0, 20000.0));
@@ -87,20 +103,16 @@ int main(int argc, char** argv) {
       "plan",
       "Plan a certified motion with MMS (manifold samples: fixed-angle slices, fixed-position\n"
       "lines). Exit 0 path found and certified, 1 no path within the time limit, 2 bad input");
-  planCmd->add_option("SCENE", pa.scene, "Scene file")->required();
+  sceneArg(planCmd, pa.scene, "Scene file");
   planCmd->add_option("-o,--output", pa.output, "Write the path (mms-path/1) here");
   planCmd->add_option("--svg", pa.svg, "Write an animated SVG of the scene and path here");
-  planCmd->add_option("--seed", pa.seed, "Random seed (same seed, same path)")
-      ->capture_default_str();
+  seedOption(planCmd, pa.seed, "Random seed (same seed, same path)");
   planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e6));
-  planCmd
-      ->add_option("--memory-limit", pa.memoryMb,
-                   "MB of address space; beyond it the run ends with 'out of memory' (0: none)")
-      ->capture_default_str()
-      ->check(memoryLimitMb);
-  planCmd->add_flag("-q,--quiet", pa.quiet, "No progress messages on stderr");
+  memoryLimitOption(planCmd, pa.memoryMb,
+                    "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
+  quietFlag(planCmd, pa.quiet, "No progress messages on stderr");
   std::vector<std::string> plannerNames;
   std::string plannerHelp = "The planner (default mms):";
   for (const mms::PlannerInfo& p : mms::planners()) {
@@ -154,14 +166,13 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::IsMember(
           {"pacman", "viking-helmet", "random-polygons", "assembly-1", "assembly-2", "random"}));
-  scenarioCmd->add_option("-o,--output", sa.output, "Scene file to write")->required();
+  outputOption(scenarioCmd, sa.output, "Scene file to write");
   scenarioCmd
       ->add_option("--tightness", sa.tightness,
                    "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.999));
-  scenarioCmd->add_option("--seed", sa.seed, "random-polygons, random: the seed of the geometry")
-      ->capture_default_str();
+  seedOption(scenarioCmd, sa.seed, "random-polygons, random: the seed of the geometry");
   scenarioCmd->add_option("--robots", sa.robots, "random: 1 or 2 robots (default: from the seed)")
       ->check(CLI::Range(1, 2));
   scenarioCmd
@@ -187,21 +198,18 @@ int main(int argc, char** argv) {
       "and step-K.path.json per step, DIR/disassembly.{scene,path}.json (the whole motion, "
       "certified)\n"
       "and DIR/disassembly.json (the sequence). Exit 1 when parts remain stuck.");
-  assembleCmd->add_option("SCENE", aa.scene, "Scene file (mms-scene/1)")->required();
-  assembleCmd->add_option("-o,--output", aa.output, "Directory for the files")->required();
+  sceneArg(assembleCmd, aa.scene, "Scene file (mms-scene/1)");
+  outputOption(assembleCmd, aa.output, "Directory for the files");
   assembleCmd->add_option("--svg", aa.svg, "Write an animated SVG of the whole disassembly");
-  assembleCmd->add_option("--seed", aa.seed, "Random seed")->capture_default_str();
+  seedOption(assembleCmd, aa.seed, "Random seed");
   assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e7));
-  assembleCmd
-      ->add_option("--memory-limit", aa.memoryMb,
-                   "MB of address space; beyond it the run ends with 'out of memory' (0: none)")
-      ->capture_default_str()
-      ->check(memoryLimitMb);
+  memoryLimitOption(assembleCmd, aa.memoryMb,
+                    "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
   assembleCmd->add_flag("--no-pairs", aa.noPairs,
                         "Two hands only: move one part at a time (exact for translating parts)");
-  assembleCmd->add_flag("-q,--quiet", aa.quiet, "No progress messages on stderr");
+  quietFlag(assembleCmd, aa.quiet, "No progress messages on stderr");
 
   BenchArgs ba;
   std::string plannersList;
@@ -216,7 +224,7 @@ int main(int argc, char** argv) {
                                       "ompl_benchmark_statistics / Planner Arena) and, with a\n"
                                       "sweep, DIR/tightness.svg");
   benchCmd->add_option("SCENES", ba.scenes, "Scene files")->check(CLI::ExistingFile);
-  benchCmd->add_option("-o,--output", ba.output, "Results folder")->required();
+  outputOption(benchCmd, ba.output, "Results folder");
   benchCmd->add_option("--planners", plannersList, "Comma-separated planners (mms and OMPL names)")
       ->capture_default_str();
   benchCmd->add_option("--runs", ba.runs, "Runs per scene and planner (seeds 1..N)")
@@ -225,9 +233,7 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 1e6));
-  benchCmd->add_option("--memory-limit", ba.memoryMb, "MB of address space per run (0: none)")
-      ->capture_default_str()
-      ->check(memoryLimitMb);
+  memoryLimitOption(benchCmd, ba.memoryMb, "MB of address space per run (0: none)");
   benchCmd->add_option(
       "--sweep-pacman", ba.sweepPacman,
       "Comma-separated Pacman tightness values to add as generated scenes, e.g. 0,0.5,0.9");
@@ -258,7 +264,7 @@ int main(int argc, char** argv) {
                          "Merge the runs of several mms bench folders (shards) into one, "
                          "with reports");
   mergeCmd->add_option("DIRS", mergeDirs, "Benchmark folders")->required();
-  mergeCmd->add_option("-o,--output", mergeOut, "Merged folder")->required();
+  outputOption(mergeCmd, mergeOut, "Merged folder");
 
   ViewArgs wa;
   auto* viewCmd = app.add_subcommand(
@@ -266,9 +272,9 @@ int main(int argc, char** argv) {
       "Write one self-contained HTML file that draws the scene and plays the path (play/pause,\n"
       "time slider, speed, traces, the planner's cells with --save-roadmap paths). Open it in\n"
       "any browser; FILE.html#t=0.5 opens it half-way through the motion");
-  viewCmd->add_option("SCENE", wa.scene, "Scene file (any format mms reads)")->required();
+  sceneArg(viewCmd, wa.scene, "Scene file (any format mms reads)");
   viewCmd->add_option("PATH", wa.path, "Path file to play");
-  viewCmd->add_option("-o,--output", wa.output, "HTML file to write")->required();
+  outputOption(viewCmd, wa.output, "HTML file to write");
 
   ImportArgs ia;
   auto* importCmd = app.add_subcommand(
@@ -277,21 +283,21 @@ int main(int argc, char** argv) {
       "names) or a discopygal JSON scene. Notes on stderr say what the conversion changed.\n"
       "(plan, validate, check, render and view read these files directly too)");
   importCmd->add_option("FILE", ia.input, "OMPL.app .cfg or discopygal .json")->required();
-  importCmd->add_option("-o,--output", ia.output, "Scene file to write")->required();
-  importCmd->add_flag("-q,--quiet", ia.quiet, "Print nothing on success");
+  outputOption(importCmd, ia.output, "Scene file to write");
+  quietFlag(importCmd, ia.quiet, "Print nothing on success");
 
   ExportArgs ea;
   auto* exportCmd = app.add_subcommand(
       "export",
       "Write a scene as discopygal JSON (--to discopygal), or a path as OMPL.app's .path text\n"
       "(--to ompl-path, one rigid robot)");
-  exportCmd->add_option("SCENE", ea.scene, "Scene file")->required();
+  sceneArg(exportCmd, ea.scene, "Scene file");
   exportCmd->add_option("PATH", ea.path, "Path file (for --to ompl-path)");
   exportCmd->add_option("--to", ea.to, "discopygal or ompl-path")
       ->required()
       ->check(CLI::IsMember({"discopygal", "ompl-path"}));
-  exportCmd->add_option("-o,--output", ea.output, "File to write")->required();
-  exportCmd->add_flag("-q,--quiet", ea.quiet, "Print nothing on success");
+  outputOption(exportCmd, ea.output, "File to write");
+  quietFlag(exportCmd, ea.quiet, "Print nothing on success");
 
   LabArgs la;
   auto* labCmd = app.add_subcommand(
@@ -304,8 +310,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"completeness", "passages"}));
   labCmd->add_option("-o,--output", la.output, "Folder for the report (created if missing)")
       ->capture_default_str();
-  labCmd->add_option("--seed", la.seed, "Random seed (same seed, same report)")
-      ->capture_default_str();
+  seedOption(labCmd, la.seed, "Random seed (same seed, same report)");
   labCmd->add_option("--trials", la.trials, "Trials per setting (0: the experiment's default)")
       ->check(CLI::Range(0, 1000000));
   labCmd->add_option("--threads", la.threads, "Threads for trials (0: all cores)")
@@ -313,7 +318,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0u, 256u));
   labCmd->add_flag("--quick", la.quick, "Small settings: a smoke run in seconds");
   labCmd->add_flag("--no-pacman", la.noPacman, "passages: leave out the Pacman proxy");
-  labCmd->add_flag("-q,--quiet", la.quiet, "No progress messages");
+  quietFlag(labCmd, la.quiet, "No progress messages");
 
   try {
     app.parse(argc, argv);
@@ -352,7 +357,7 @@ int main(int argc, char** argv) {
         if (*assembleCmd) return assemble(aa);
         if (*benchCmd) {
           ba.planners.clear();
-          for (const std::string& p : split(plannersList, ',')) {
+          for (const std::string& p : mms::split(plannersList, ',')) {
             if (std::find(plannerNames.begin(), plannerNames.end(), p) == plannerNames.end())
               throw mms::InputError("--planners: unknown planner '" + p + "'");
             ba.planners.push_back(p);

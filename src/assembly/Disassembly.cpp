@@ -8,7 +8,7 @@
 #include "manifolds/CellSampling.h"
 #include "planner/MmsPlanner.h"
 #include "planner/TwoRobotPlanner.h"
-#include "scene/PathIO.h"
+#include "io/PathIO.h"
 
 namespace mms {
 
@@ -212,9 +212,7 @@ DisassemblyResult DisassemblyPlanner::solve(
   out.path = path_;
   // Each step was certified in its own scene; the whole motion is certified once more.
   const CollisionChecker checker(out.finalScene);
-  Path whole;
-  whole.waypoints = out.path;
-  if (const auto c = checkPath(out.finalScene, checker, whole); !c.ok)
+  if (const auto c = checkPath(out.finalScene, checker, out.path); !c.ok)
     throw std::logic_error("the combined disassembly path failed certification: " + c.reason);
   out.seconds = clock.seconds();
   return out;

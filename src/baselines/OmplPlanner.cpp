@@ -239,9 +239,7 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
       }
     r.waypoints.push_back(q);
   }
-  Path p;
-  p.waypoints = r.waypoints;
-  r.certificate = checkPath(scene, checker, p);
+  r.certificate = checkPath(scene, checker, r.waypoints);
   r.status = r.certificate.ok ? OmplResult::Status::Found : OmplResult::Status::Uncertified;
   if (!r.certificate.ok) r.waypoints.clear();
   return r;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "mms/Errors.h"
+#include "render/Plot.h"
 
 namespace mms {
 
@@ -296,106 +297,49 @@ std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunR
 }
 
 std::string tightnessPlot(const std::vector<Summary>& summaries, const std::string& title) {
+  PlotSpec spec;
+  spec.title = title;
+  spec.xLabel = "tightness";
+  spec.yLabel = "planning time [s] (mean ± 1 stdev, log scale)";
+  spec.logY = true;
+  spec.width = 760;
+  spec.footnote = "× n/m: n of m runs unsolved";
+  double limit = 0;
   std::vector<std::string> planners;
-  double tMin = 1e9, tMax = -1e9, yMax = 1e-3, yMin = 1e9, limit = 0;
   for (const Summary& s : summaries) {
     if (s.tightness < 0) continue;
+    limit = std::max(limit, s.timeLimit);
     if (std::find(planners.begin(), planners.end(), s.planner) == planners.end())
       planners.push_back(s.planner);
-    tMin = std::min(tMin, s.tightness);
-    tMax = std::max(tMax, s.tightness);
-    limit = std::max(limit, s.timeLimit);
-    if (s.solved) {
-      yMin = std::min(yMin, 0.5 * s.meanTrimmed);
-      yMax = std::max(yMax, s.meanTrimmed + s.stdevTrimmed);
-    }
   }
-  yMax = std::max(yMax, limit);
-  if (yMin > yMax) yMin = yMax / 100;
-  yMin = std::pow(10, std::floor(std::log10(yMin)));
-  yMax = std::pow(10, std::ceil(std::log10(yMax)));
-  if (tMax <= tMin) tMax = tMin + 1;
-  const double pad = 0.05 * (tMax - tMin);
-  tMin -= pad;
-  tMax += pad;
-  const double W = 760, H = 420, L = 70, R = 190, T = 40, B = 50;
-  auto X = [&](double t) { return L + (t - tMin) / (tMax - tMin) * (W - L - R); };
-  auto Y = [&](double y) {
-    return T + (std::log10(yMax) - std::log10(std::max(y, yMin))) /
-                   (std::log10(yMax) - std::log10(yMin)) * (H - T - B);
-  };
-  const char* colours[] = {"#d62728", "#1f77b4", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b",
-                           "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#000000"};
-  std::ostringstream svg;
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
-         "width=\""
-      << W << "\" height=\"" << H << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << L << "\" y=\"24\" font-size=\"15\">" << title << "</text>\n";
-  // Axes, decades, ticks.
-  svg << "<g stroke=\"#999\" stroke-width=\"0.5\">\n";
-  for (double y = yMin; y <= yMax * 1.0001; y *= 10)
-    svg << "<line x1=\"" << L << "\" x2=\"" << W - R << "\" y1=\"" << Y(y) << "\" y2=\"" << Y(y)
-        << "\"/>\n";
-  svg << "</g>\n";
-  for (double y = yMin; y <= yMax * 1.0001; y *= 10)
-    svg << "<text x=\"" << L - 6 << "\" y=\"" << Y(y) + 4 << "\" text-anchor=\"end\">"
-        << fmt("%g", y) << "</text>\n";
-  std::set<double> ts;
-  for (const Summary& s : summaries)
-    if (s.tightness >= 0) ts.insert(s.tightness);
-  for (double t : ts)
-    svg << "<text x=\"" << X(t) << "\" y=\"" << H - B + 16 << "\" text-anchor=\"middle\">"
-        << fmt("%g", t) << "</text>\n";
-  svg << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 10
-      << "\" text-anchor=\"middle\">tightness</text>\n"
-      << "<text x=\"16\" y=\"" << (T + H - B) / 2 << "\" transform=\"rotate(-90 16 "
-      << (T + H - B) / 2
-      << ")\" text-anchor=\"middle\">planning time [s] (mean ± 1 stdev, log scale)</text>\n"
-      << "<line x1=\"" << L << "\" y1=\"" << H - B << "\" x2=\"" << W - R << "\" y2=\"" << H - B
-      << "\" stroke=\"black\"/>\n"
-      << "<line x1=\"" << L << "\" y1=\"" << T << "\" x2=\"" << L << "\" y2=\"" << H - B
-      << "\" stroke=\"black\"/>\n";
-  if (limit > 0)
-    svg << "<line x1=\"" << L << "\" x2=\"" << W - R << "\" y1=\"" << Y(limit) << "\" y2=\""
-        << Y(limit) << "\" stroke=\"black\" stroke-dasharray=\"4 3\"/><text x=\"" << L + 4
-        << "\" y=\"" << Y(limit) - 4 << "\">time limit</text>\n";
+  if (limit > 0) spec.rules.push_back({limit, "time limit"});
+  std::vector<Series> series;
   for (size_t pi = 0; pi < planners.size(); ++pi) {
-    const char* c = colours[pi % 11];
     std::vector<const Summary*> pts;
     for (const Summary& s : summaries)
       if (s.planner == planners[pi] && s.tightness >= 0) pts.push_back(&s);
     std::sort(pts.begin(), pts.end(), [](auto a, auto b) { return a->tightness < b->tightness; });
-    const double dx = (double(pi) - 0.5 * (planners.size() - 1)) * 3;  // spread overlapping bars
-    std::string line;
+    Series solved{planners[pi], seriesColour(pi), {}};
+    Series failed{"", seriesColour(pi), {}};
+    failed.line = false;
+    failed.cross = true;
     for (const Summary* s : pts) {
-      const double x = X(s->tightness) + dx;
       if (s->solved) {
-        line += fmt("%.1f", x) + "," + fmt("%.1f", Y(s->meanTrimmed)) + " ";
-        svg << "<line x1=\"" << x << "\" x2=\"" << x << "\" y1=\""
-            << Y(s->meanTrimmed + s->stdevTrimmed)
-            << "\" y2=\""
-            // On a log axis a stdev larger than the mean has no lower end: stop at half the mean.
-            << Y(std::max(0.5 * s->meanTrimmed, s->meanTrimmed - s->stdevTrimmed)) << "\" stroke=\""
-            << c << "\"/>\n"
-            << "<circle cx=\"" << x << "\" cy=\"" << Y(s->meanTrimmed) << "\" r=\"3.5\" fill=\""
-            << c << "\"/>\n";
+        solved.points.push_back({s->tightness, s->meanTrimmed});
+        // On a log axis a stdev larger than the mean has no lower end: stop at half the mean.
+        solved.bars.push_back({std::max(0.5 * s->meanTrimmed, s->meanTrimmed - s->stdevTrimmed),
+                               s->meanTrimmed + s->stdevTrimmed});
       }
-      if (s->solved < s->runs)  // unsolved runs: a cross at the time limit with the count
-        svg << "<text x=\"" << x << "\" y=\"" << Y(limit) + 4 << "\" text-anchor=\"middle\" fill=\""
-            << c << "\" font-weight=\"bold\">×</text><text x=\"" << x << "\" y=\""
-            << Y(limit) - 8 - 9 * double(pi) << "\" text-anchor=\"middle\" fill=\"" << c
-            << "\" font-size=\"8\">" << s->runs - s->solved << "/" << s->runs << "</text>\n";
+      if (s->solved < s->runs) {  // unsolved runs: a cross at the time limit with the count
+        failed.points.push_back({s->tightness, limit});
+        failed.labels.push_back(std::to_string(s->runs - s->solved) + "/" +
+                                std::to_string(s->runs));
+      }
     }
-    if (!line.empty())
-      svg << "<polyline fill=\"none\" stroke=\"" << c << "\" points=\"" << line << "\"/>\n";
-    svg << "<rect x=\"" << W - R + 12 << "\" y=\"" << T + 18 * pi
-        << "\" width=\"12\" height=\"12\" fill=\"" << c << "\"/><text x=\"" << W - R + 30
-        << "\" y=\"" << T + 18 * pi + 10 << "\">" << planners[pi] << "</text>\n";
+    series.push_back(std::move(solved));
+    series.push_back(std::move(failed));
   }
-  svg << "<text x=\"" << W - R + 12 << "\" y=\"" << T + 18 * planners.size() + 14
-      << "\" font-size=\"10\">× n/m: n of m runs unsolved</text>\n</svg>\n";
-  return svg.str();
+  return linePlot(spec, series);
 }
 
 }  // namespace mms

@@ -150,12 +150,12 @@ class Certifier {
 
 }  // namespace
 
-PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker, const Path& path,
-                          const PathCheckSettings& settings) {
+PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker,
+                          const std::vector<Config>& waypoints, const PathCheckSettings& settings) {
   PathCheckResult r;
   r.minClearance = std::numeric_limits<double>::infinity();
   const size_t k = scene.robots.size();
-  const auto& w = path.waypoints;
+  const auto& w = waypoints;
   auto fail = [&](size_t segment, double s, std::string why) {
     r.ok = false;
     r.segment = segment;

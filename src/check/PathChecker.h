@@ -11,7 +11,9 @@
 
 #include "geometry/CollisionChecker.h"
 #include "mms/Certificate.h"
-#include "scene/PathIO.h"
+#include <vector>
+
+#include "mms/Scene.h"
 
 namespace mms {
 
@@ -23,7 +25,8 @@ struct PathCheckSettings {
 
 /// Checks that the path starts at the scene's start, ends at its goal, keeps translate-only
 /// robots at their angle, and is free as a continuous motion.
-PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker, const Path& path,
+PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker,
+                          const std::vector<Config>& waypoints,
                           const PathCheckSettings& settings = {});
 
 /// Only the continuous-motion part: every segment between consecutive waypoints is free.

@@ -10,7 +10,7 @@
 #include "lab/EuclideanMms.h"
 #include "lab/KClearance.h"
 #include "lab/PacmanPassage.h"
-#include "lab/Plot.h"
+#include "render/Plot.h"
 #include "lab/PrmOnBoxes.h"
 #include "mms/Termination.h"
 #include "util/Parallel.h"

@@ -6,7 +6,7 @@
 #include "geometry/CollisionChecker.h"
 #include "mms/Termination.h"
 #include "planner/TwoRobotPlanner.h"
-#include "scene/Generators.h"
+#include "scenarios/Generators.h"
 #include "util/Random.h"
 
 namespace mms::lab {

@@ -101,9 +101,7 @@ MmsResult::Status MmsPlanner::solveTranslation(const Pose& start, const Pose& go
   std::vector<Config> w;
   for (Vec2 p : *route) w.push_back({p.x, p.y, start.theta});
   shortcutPath(scene_, checker_, rng_, settings_.shortcutAttempts, w);
-  Path path;
-  path.waypoints = w;
-  result.certificate = checkPath(scene_, checker_, path);
+  result.certificate = checkPath(scene_, checker_, w);
   if (!result.certificate.ok) {
     ++stats_.rejectedPaths;
     return MmsResult::Status::NotFound;

@@ -102,9 +102,7 @@ CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& chec
   shortcutPath(scene, checker, rng, shortcuts.attempts, *w, shortcuts.oneRobotAtATime);
   m.shortcutSeconds = shortcut.seconds();
   Stopwatch certify;
-  Path path;
-  path.waypoints = *w;
-  m.certificate = checkPath(scene, checker, path);
+  m.certificate = checkPath(scene, checker, *w);
   m.certifySeconds = certify.seconds();
   m.ok = m.certificate.ok;
   m.waypoints = std::move(*w);

@@ -1,6 +1,6 @@
 #include "render/HtmlViewer.h"
 
-#include "scene/SceneIO.h"
+#include "io/SceneIO.h"
 #include "util/Markup.h"
 
 namespace mms {

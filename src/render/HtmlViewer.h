@@ -11,7 +11,7 @@
 // max over robots of |dp| + radius * |dtheta|.
 #include <string>
 
-#include "scene/PathIO.h"
+#include "io/PathIO.h"
 
 namespace mms {
 

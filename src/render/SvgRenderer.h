@@ -5,7 +5,7 @@
 // animation show it at its start).
 #include <string>
 
-#include "scene/PathIO.h"
+#include "io/PathIO.h"
 
 namespace mms {
 

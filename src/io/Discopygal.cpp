@@ -1,11 +1,11 @@
-#include "import/Discopygal.h"
+#include "io/Discopygal.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 
-#include "scene/Json.h"
-#include "scene/SceneIO.h"
+#include "io/Json.h"
+#include "io/SceneIO.h"
 
 namespace mms {
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "import/OmplApp.h"
+#include "io/OmplApp.h"
 #include "mms/Scene.h"
 
 namespace mms {

@@ -1,4 +1,4 @@
-#include "scene/Json.h"
+#include "io/Json.h"
 
 #include <cmath>
 #include <fstream>

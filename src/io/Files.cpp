@@ -1,9 +1,8 @@
-#include "mms/Io.h"
-
-#include "api/RunSummary.h"
 #include "check/PathChecker.h"
-#include "import/AnyScene.h"
-#include "scene/PathIO.h"
+#include "io/AnyScene.h"
+#include "io/PathIO.h"
+#include "io/RunSummary.h"
+#include "mms/Io.h"
 
 namespace mms {
 
@@ -27,10 +26,7 @@ std::vector<Config> readPathFile(const std::string& file, const Scene& scene) {
 }
 
 PathCheckResult certify(const Scene& scene, const std::vector<Config>& waypoints) {
-  const CollisionChecker checker(scene);
-  Path path;
-  path.waypoints = waypoints;
-  return checkPath(scene, checker, path);
+  return checkPath(scene, CollisionChecker(scene), waypoints);
 }
 
 }  // namespace mms

@@ -1,4 +1,4 @@
-#include "import/OmplApp.h"
+#include "io/OmplApp.h"
 
 #include <boost/property_tree/ini_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "geometry/Exact.h"
-#include "import/Collada.h"
+#include "io/Collada.h"
+#include "io/SceneIO.h"
 #include "mms/Errors.h"
-#include "scene/SceneIO.h"
 
 namespace mms {
 

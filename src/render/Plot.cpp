@@ -1,4 +1,4 @@
-#include "lab/Plot.h"
+#include "render/Plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "util/Markup.h"
 
-namespace mms::lab {
+namespace mms {
 
 namespace {
 
@@ -48,12 +48,21 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
     return std::isfinite(x) && std::isfinite(y) && (!spec.logX || x > 0) && (!spec.logY || y > 0);
   };
   double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+  auto extend = [&](double x, double y) {
+    if (!usable(x, y)) return;
+    x0 = std::min(x0, x), x1 = std::max(x1, x);
+    y0 = std::min(y0, y), y1 = std::max(y1, y);
+  };
   for (const Series& s : series)
-    for (auto [x, y] : s.points)
-      if (usable(x, y)) {
-        x0 = std::min(x0, x), x1 = std::max(x1, x);
-        y0 = std::min(y0, y), y1 = std::max(y1, y);
+    for (size_t i = 0; i < s.points.size(); ++i) {
+      extend(s.points[i].first, s.points[i].second);
+      if (i < s.bars.size()) {
+        extend(s.points[i].first, s.bars[i].first);
+        extend(s.points[i].first, s.bars[i].second);
       }
+    }
+  for (const auto& [y, label] : spec.rules)
+    if (x0 <= x1) extend(x0, y);
   if (!(x0 <= x1)) x0 = 1, x1 = 10, y0 = 1, y1 = 10;
   if (spec.logX)
     x0 = std::pow(10.0, std::floor(std::log10(x0))), x1 = std::pow(10.0, std::ceil(std::log10(x1)));
@@ -98,6 +107,11 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
       << "\" text-anchor=\"middle\">" << escapeMarkup(spec.xLabel) << "</text>\n"
       << "<text transform=\"translate(16," << top + ph / 2
       << ") rotate(-90)\" text-anchor=\"middle\">" << escapeMarkup(spec.yLabel) << "</text>\n";
+  for (const auto& [y, label] : spec.rules)
+    if (usable(x0, y))
+      svg << "<line x1=\"" << left << "\" y1=\"" << fy(y) << "\" x2=\"" << left + pw << "\" y2=\""
+          << fy(y) << "\" stroke=\"black\" stroke-dasharray=\"4,3\"/>\n<text x=\"" << left + 4
+          << "\" y=\"" << fy(y) - 4 << "\">" << escapeMarkup(label) << "</text>\n";
   size_t legendRow = 0;
   for (size_t i = 0; i < series.size(); ++i) {
     const Series& s = series[i];
@@ -105,13 +119,27 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
     pts << std::fixed << std::setprecision(1);
     for (auto [x, y] : s.points)
       if (usable(x, y)) pts << fx(x) << "," << fy(y) << " ";
-    svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.6\""
-        << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << " points=\"" << pts.str() << "\"/>\n";
-    if (s.markers)
-      for (auto [x, y] : s.points)
-        if (usable(x, y))
-          svg << "<circle cx=\"" << fx(x) << "\" cy=\"" << fy(y) << "\" r=\"2.6\" fill=\""
-              << s.colour << "\"/>\n";
+    if (s.line)
+      svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.6\""
+          << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << " points=\"" << pts.str()
+          << "\"/>\n";
+    for (size_t k = 0; k < s.points.size(); ++k) {
+      const auto [x, y] = s.points[k];
+      if (!usable(x, y)) continue;
+      if (k < s.bars.size() && usable(x, s.bars[k].first) && usable(x, s.bars[k].second))
+        svg << "<line x1=\"" << fx(x) << "\" y1=\"" << fy(s.bars[k].first) << "\" x2=\"" << fx(x)
+            << "\" y2=\"" << fy(s.bars[k].second) << "\" stroke=\"" << s.colour << "\"/>\n";
+      if (s.markers && s.cross)
+        svg << "<path d=\"M" << fx(x) - 4 << "," << fy(y) - 4 << "l8,8m0,-8l-8,8\" stroke=\""
+            << s.colour << "\" stroke-width=\"2\"/>\n";
+      else if (s.markers)
+        svg << "<circle cx=\"" << fx(x) << "\" cy=\"" << fy(y) << "\" r=\"2.6\" fill=\""
+            << s.colour << "\"/>\n";
+      if (k < s.labels.size() && !s.labels[k].empty())
+        svg << "<text x=\"" << fx(x) << "\" y=\"" << fy(y) - 8 - 10 * double(i % 3)
+            << "\" text-anchor=\"middle\" font-size=\"9\" fill=\"" << s.colour << "\">"
+            << escapeMarkup(s.labels[k]) << "</text>\n";
+    }
     if (s.name.empty()) continue;
     double ly = top + 8 + 18 * double(legendRow++);
     svg << "<line x1=\"" << left + pw + 12 << "\" y1=\"" << ly << "\" x2=\"" << left + pw + 34
@@ -119,8 +147,11 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
         << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << "/>\n<text x=\"" << left + pw + 40
         << "\" y=\"" << ly + 4 << "\">" << escapeMarkup(s.name) << "</text>\n";
   }
+  if (!spec.footnote.empty())
+    svg << "<text x=\"" << left + pw + 12 << "\" y=\"" << top + 8 + 18 * double(legendRow) + 10
+        << "\" font-size=\"10\">" << escapeMarkup(spec.footnote) << "</text>\n";
   svg << "</svg>\n";
   return svg.str();
 }
 
-}  // namespace mms::lab
+}  // namespace mms

@@ -3,7 +3,7 @@
 // movable parts are translate-only robots. `slack` is the gap left between parts and walls.
 #include <cstdio>
 
-#include "scene/Generators.h"
+#include "scenarios/Generators.h"
 
 namespace mms {
 

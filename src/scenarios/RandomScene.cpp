@@ -1,10 +1,10 @@
-#include "scene/RandomScene.h"
+#include "scenarios/RandomScene.h"
 
 #include <cmath>
 #include <string>
 
 #include "geometry/CollisionChecker.h"
-#include "scene/Generators.h"
+#include "scenarios/Generators.h"
 #include "util/Random.h"
 
 namespace mms {

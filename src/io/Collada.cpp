@@ -1,4 +1,4 @@
-#include "import/Collada.h"
+#include "io/Collada.h"
 
 #include <array>
 #include <cstdlib>

@@ -3,7 +3,7 @@
 // problems, and discopygal JSON scenes (converted on the fly, with notes on what changed).
 #include <string>
 
-#include "import/OmplApp.h"
+#include "io/OmplApp.h"
 #include "mms/Scene.h"
 
 namespace mms {

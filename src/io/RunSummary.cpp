@@ -1,4 +1,4 @@
-#include "api/RunSummary.h"
+#include "io/RunSummary.h"
 
 #include <iterator>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "scene/Generators.h"
+#include "scenarios/Generators.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,10 +1,10 @@
-#include "import/AnyScene.h"
+#include "io/AnyScene.h"
 
 #include <filesystem>
 
-#include "import/Discopygal.h"
-#include "scene/Json.h"
-#include "scene/SceneIO.h"
+#include "io/Discopygal.h"
+#include "io/Json.h"
+#include "io/SceneIO.h"
 
 namespace mms {
 

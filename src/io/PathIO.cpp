@@ -1,6 +1,6 @@
-#include "scene/PathIO.h"
+#include "io/PathIO.h"
 
-#include "scene/Json.h"
+#include "io/Json.h"
 #include "util/AtomicFile.h"
 
 namespace mms {

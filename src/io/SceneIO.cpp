@@ -1,11 +1,11 @@
-#include "scene/SceneIO.h"
+#include "io/SceneIO.h"
 
 #include <set>
 
 #include "geometry/CollisionChecker.h"
 #include "geometry/PolygonOps.h"
 #include "geometry/Predicates.h"
-#include "scene/Json.h"
+#include "io/Json.h"
 #include "util/AtomicFile.h"
 
 namespace mms {
