@@ -5,11 +5,11 @@
 
 #include <cmath>
 
+#include "io/SceneIO.h"
 #include "manifolds/Line.h"
 #include "manifolds/Slice.h"
 #include "planner/MmsPlanner.h"
 #include "scenarios/Generators.h"
-#include "io/SceneIO.h"
 
 using namespace mms;
 
@@ -98,7 +98,7 @@ void BM_Query(benchmark::State& state, const char* file) {
     st.seed = ++seed;
     MmsPlanner planner(s, 0, st);
     const MmsResult r = planner.solve(s.robots[0].start, s.robots[0].goal, Termination(60));
-    if (r.status != MmsResult::Status::Found) state.SkipWithError("no path");
+    if (r.status != PlanStatus::Found) state.SkipWithError("no path");
   }
 }
 BENCHMARK_CAPTURE(BM_Query, bar_slot, "one-robot/bar-slot.json")->Unit(benchmark::kMillisecond);

@@ -151,7 +151,7 @@ TEST(Assembly, HookedPartsClimbOutInAlternation) {
     TwoRobotSettings st;
     st.seed = uint64_t(seed);
     const TwoRobotResult r = TwoRobotPlanner(s, st).solve(Termination(planSeconds(60)));
-    ASSERT_EQ(r.status, MmsResult::Status::Found) << "seed " << seed;
+    ASSERT_EQ(r.status, PlanStatus::Found) << "seed " << seed;
     EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
     // The climb is 2.2 and each turn gains at most 2 * 0.05.
     EXPECT_GE(alternations(r.waypoints), 21) << "seed " << seed;
@@ -164,7 +164,7 @@ TEST(Assembly, MixedRigidAndTranslatingRobots) {
   const CollisionChecker checker(s);
   TwoRobotSettings st;
   const TwoRobotResult r = TwoRobotPlanner(s, st).solve(Termination(planSeconds(60)));
-  ASSERT_EQ(r.status, MmsResult::Status::Found);
+  ASSERT_EQ(r.status, PlanStatus::Found);
   EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
   for (const Config& q : r.waypoints) EXPECT_EQ(q[5], 0.0);
 }

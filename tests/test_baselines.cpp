@@ -24,11 +24,11 @@ TEST(Ompl, EveryPlannerRunsAndOnlyCertifiedPathsAreFound) {
     st.seed = 1;
     const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(2.0)));
     // The graph is counted when the planner finishes before its limit (PRM's always).
-    if (r.status == OmplResult::Status::Found || name.find("prm") != std::string::npos) {
+    if (r.status == PlanStatus::Found || name.find("prm") != std::string::npos) {
       EXPECT_GT(r.states, 0u) << name;
     }
     EXPECT_LT(r.seconds, planSeconds(2.0) + 1.0) << name;  // the termination condition is honoured
-    if (r.status == OmplResult::Status::Found) {
+    if (r.status == PlanStatus::Found) {
       ++found;
       EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << name;
     } else {
@@ -50,12 +50,12 @@ TEST(Ompl, CoarseResolutionPathsAreCheckedNotTrusted) {
     st.seed = seed;
     st.resolution = 0.2;
     const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(2.0)));
-    if (r.status == OmplResult::Status::Uncertified) {
+    if (r.status == PlanStatus::Uncertified) {
       ++uncertified;
       EXPECT_FALSE(r.certificate.ok);
       EXPECT_NE(r.certificate.reason.find("hits"), std::string::npos) << r.certificate.reason;
     }
-    if (r.status == OmplResult::Status::Found) {
+    if (r.status == PlanStatus::Found) {
       EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
     }
   }
@@ -74,7 +74,7 @@ TEST(Ompl, TwoRobotsAndTranslatingPartsUseTheirOwnSpaces) {
       st.seed = seed;
       st.resolution = 0.0005;
       const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(20.0)));
-      if (r.status != OmplResult::Status::Found) continue;
+      if (r.status != PlanStatus::Found) continue;
       ++found;
       for (const Config& q : r.waypoints)
         for (size_t i = 0; i < s.robots.size(); ++i)

@@ -122,7 +122,7 @@ MmsResult plan(const Scene& s, double seconds) {
 TEST(Degenerate, TranslatingRobotPassesAGapExactlyItsWidthTouchingBothSides) {
   const Scene s = touchingScene(1.0, Motion::Translate);
   const MmsResult r = plan(s, test::planSeconds(10));
-  ASSERT_EQ(r.status, MmsResult::Status::Found);
+  ASSERT_EQ(r.status, PlanStatus::Found);
   const CollisionChecker checker(s);
   const PathCheckResult c = checkPath(s, checker, r.waypoints);
   EXPECT_TRUE(c.ok) << c.reason;
@@ -132,18 +132,18 @@ TEST(Degenerate, TranslatingRobotPassesAGapExactlyItsWidthTouchingBothSides) {
 TEST(Degenerate, GapNarrowerThanTheRobotByTenTolerancesHasNoPath) {
   const Scene probe = touchingScene(1.0, Motion::Translate);
   const Scene s = touchingScene(1.0 - 10 * probe.tolerance(), Motion::Translate);
-  EXPECT_EQ(plan(s, test::planSeconds(10)).status, MmsResult::Status::NotFound);
+  EXPECT_EQ(plan(s, test::planSeconds(10)).status, PlanStatus::NotFound);
 }
 
 TEST(Degenerate, RigidRobotAtAnExactFitGapNeverReturnsAnUncertifiedPath) {
   const Scene s = touchingScene(1.0, Motion::Rigid);
   const MmsResult r = plan(s, test::planSeconds(2));
-  if (r.status == MmsResult::Status::Found) {
+  if (r.status == PlanStatus::Found) {
     EXPECT_TRUE(r.certificate.ok);
     const CollisionChecker checker(s);
     EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
   } else {
-    EXPECT_EQ(r.status, MmsResult::Status::NotFound);
+    EXPECT_EQ(r.status, PlanStatus::NotFound);
   }
 }
 
@@ -152,7 +152,7 @@ TEST(Degenerate, HundredsOfObstacles) {
   ASSERT_EQ(s.obstacles.size(), 500u);
   checkSlice(s, 0.7, test::kSanitized ? 300 : 2000);
   const MmsResult r = plan(s, test::planSeconds(3));
-  if (r.status == MmsResult::Status::Found) {
+  if (r.status == PlanStatus::Found) {
     const CollisionChecker checker(s);
     EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
   }

@@ -37,14 +37,14 @@ TEST(Limits, OneRobotPlannerEndsWhenTheLimitStrikesInsideASlice) {
   MmsPlanner planner(scene, 0, {});
   const MmsResult r =
       planner.solve(scene.robots[0].start, scene.robots[0].goal, Termination(0.001));
-  EXPECT_EQ(r.status, MmsResult::Status::NotFound);
+  EXPECT_EQ(r.status, PlanStatus::NotFound);
   EXPECT_EQ(planner.slices().size(), 0u);  // the slice under way was dropped
   EXPECT_EQ(StopScope::current(), nullptr);
   // The planner stays usable: a second query with time builds slices.
   const MmsResult again =
       planner.solve(scene.robots[0].start, scene.robots[0].goal, Termination(test::planSeconds(5)));
   EXPECT_GT(planner.slices().size(), 0u);
-  if (again.status == MmsResult::Status::Found) {
+  if (again.status == PlanStatus::Found) {
     EXPECT_TRUE(again.certificate.ok);
   }
 }
@@ -53,7 +53,7 @@ TEST(Limits, TwoRobotPlannerBuildsNothingBeforeSolve) {
   const Scene scene = crowded(2);
   TwoRobotPlanner planner(scene);
   const TwoRobotResult r = planner.solve(Termination(0.001));
-  EXPECT_EQ(r.status, MmsResult::Status::NotFound);
+  EXPECT_EQ(r.status, PlanStatus::NotFound);
   EXPECT_EQ(r.stats.subspaces, 0u);
   EXPECT_EQ(r.stats.baseSliceSeconds, 0.0);  // the base slices were not built before solve()
 }

@@ -30,7 +30,7 @@ TEST_P(SolvableScene, SolvedWithCertifiedPathsForSeveralSeeds) {
   const CollisionChecker checker(s);
   for (uint64_t seed = 1; seed <= uint64_t(seedsToRun(4)); ++seed) {
     const MmsResult r = plan(s, seed, planSeconds(30));
-    ASSERT_EQ(r.status, MmsResult::Status::Found) << GetParam() << " seed " << seed;
+    ASSERT_EQ(r.status, PlanStatus::Found) << GetParam() << " seed " << seed;
     // An independent check of what the planner returned.
     const PathCheckResult c = checkPath(s, checker, r.waypoints);
     EXPECT_TRUE(c.ok) << c.reason;
@@ -59,7 +59,7 @@ TEST(Plan, SearchStopsBuildingOnceStartAndGoalConnect) {
   const MmsSettings defaults;
   for (uint64_t seed = 1; seed <= 3; ++seed) {
     const MmsResult r = plan(s, seed, planSeconds(30));
-    ASSERT_EQ(r.status, MmsResult::Status::Found);
+    ASSERT_EQ(r.status, PlanStatus::Found);
     EXPECT_EQ(r.stats.rounds, 1u);
     EXPECT_LT(r.stats.manifolds.lines, defaults.nLines / 2) << "seed " << seed;
     EXPECT_GE(r.stats.pathManifolds, 2u);
@@ -131,14 +131,14 @@ TEST(Plan, TranslateOnlyRobotUsesItsExactFreeSpace) {
   r.motion = Motion::Translate;
   s.robots = {r};
   const MmsResult found = plan(s, 1, 10);
-  ASSERT_EQ(found.status, MmsResult::Status::Found);
+  ASSERT_EQ(found.status, PlanStatus::Found);
   for (const Config& q : found.waypoints) EXPECT_EQ(q[2], 0.3);
   EXPECT_EQ(found.stats.manifolds.slices, 1u);  // one exact slice, no sampling
   // Close the gap above the wall: the two sides are different cells and the answer is
   // immediate, not a time-out.
   s.obstacles = {{{4, 0}, {6, 0}, {6, 10}, {4, 10}}};
   const auto t0 = std::chrono::steady_clock::now();
-  EXPECT_EQ(plan(s, 1, 30).status, MmsResult::Status::NotFound);
+  EXPECT_EQ(plan(s, 1, 30).status, PlanStatus::NotFound);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
 }
 
@@ -147,13 +147,13 @@ TEST(Plan, RoadmapAnswersASecondQueryWithoutRebuilding) {
   MmsPlanner planner(s, 0, MmsSettings{});
   const Robot& r = s.robots[0];
   const MmsResult first = planner.solve(r.start, r.goal, Termination(30));
-  ASSERT_EQ(first.status, MmsResult::Status::Found);
+  ASSERT_EQ(first.status, PlanStatus::Found);
   const size_t slices = planner.slices().size();
   // The reverse query, and one to another free placement outside the trap.
   const MmsResult back = planner.solve(r.goal, r.start, Termination(30));
-  ASSERT_EQ(back.status, MmsResult::Status::Found);
+  ASSERT_EQ(back.status, PlanStatus::Found);
   const MmsResult other = planner.solve(r.start, {7, 6, 0}, Termination(30));
-  ASSERT_EQ(other.status, MmsResult::Status::Found);
+  ASSERT_EQ(other.status, PlanStatus::Found);
   EXPECT_EQ(planner.slices().size(), slices);  // answered from the existing slices
 }
 

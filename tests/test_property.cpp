@@ -42,14 +42,14 @@ PlanRun planMms(const Scene& scene, uint64_t seed, double limit) {
     MmsPlanner planner(scene, 0, s);
     const MmsResult r =
         planner.solve(scene.robots[0].start, scene.robots[0].goal, Termination(limit));
-    run.found = r.status == MmsResult::Status::Found;
+    run.found = r.status == PlanStatus::Found;
     run.waypoints = r.waypoints;
   } else {
     TwoRobotSettings s;
     s.seed = seed;
     TwoRobotPlanner planner(scene, s);
     const TwoRobotResult r = planner.solve(Termination(limit));
-    run.found = r.status == MmsResult::Status::Found;
+    run.found = r.status == PlanStatus::Found;
     run.waypoints = r.waypoints;
   }
   run.seconds = clock.seconds();
@@ -62,7 +62,7 @@ PlanRun planOmpl(const Scene& scene, uint64_t seed, double limit) {
   s.seed = seed;
   Stopwatch clock;
   const OmplResult r = planWithOmpl(scene, s, Termination(limit));
-  return {r.status == OmplResult::Status::Found, r.waypoints, clock.seconds()};
+  return {r.status == PlanStatus::Found, r.waypoints, clock.seconds()};
 }
 
 class RandomScenes : public testing::TestWithParam<int> {};

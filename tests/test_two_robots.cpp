@@ -42,7 +42,7 @@ TEST_P(TwoRobotScene, SolvedWithCertifiedPathsMovingOneRobotAtATime) {
   const CollisionChecker checker(s);
   for (int seed = 1; seed <= seedsToRun(GetParam().seeds); ++seed) {
     const TwoRobotResult r = plan(s, uint64_t(seed));
-    ASSERT_EQ(r.status, MmsResult::Status::Found) << GetParam().scene << " seed " << seed;
+    ASSERT_EQ(r.status, PlanStatus::Found) << GetParam().scene << " seed " << seed;
     const PathCheckResult c = checkPath(s, checker, r.waypoints);
     EXPECT_TRUE(c.ok) << c.reason;
     for (size_t j = 1; j < r.waypoints.size(); ++j) {
@@ -76,7 +76,7 @@ TEST(TwoRobots, StartAndGoalAnglesSlicedAndEarlyStop) {
   const TwoRobotSettings defaults;
   for (uint64_t seed = 1; seed <= 3; ++seed) {
     const TwoRobotResult r = plan(s, seed);
-    ASSERT_EQ(r.status, MmsResult::Status::Found);
+    ASSERT_EQ(r.status, PlanStatus::Found);
     EXPECT_LT(r.stats.subspaces, 2 * (defaults.nFixings + 2)) << "seed " << seed;
     // Every subspace of a rigid robot has its n_theta (+1 for robot 1) angles, plus its start
     // angle (start and goal angles coincide in this scene).
@@ -101,10 +101,10 @@ TEST(TwoRobots, NarrowArcSlicesOpenTheTightestPacman) {
       st.narrowSlices = narrow;
       const TwoRobotResult r = TwoRobotPlanner(s, st).solve(Termination(planSeconds(60)));
       if (narrow == 0) {
-        EXPECT_EQ(r.status, MmsResult::Status::NotFound) << "seed " << seed;
+        EXPECT_EQ(r.status, PlanStatus::NotFound) << "seed " << seed;
         continue;
       }
-      ASSERT_EQ(r.status, MmsResult::Status::Found) << "seed " << seed;
+      ASSERT_EQ(r.status, PlanStatus::Found) << "seed " << seed;
       EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
     }
   }
@@ -117,19 +117,19 @@ TEST(TwoRobots, NarrowArcSlicesWaitUntilStartAndGoalFailToConnect) {
   const Scene s = loadScene(scenario("two-robots/random-polygons.json"));
   for (uint64_t seed = 1; seed <= 3; ++seed) {
     const TwoRobotResult r = plan(s, seed);
-    ASSERT_EQ(r.status, MmsResult::Status::Found) << "seed " << seed;
+    ASSERT_EQ(r.status, PlanStatus::Found) << "seed " << seed;
     EXPECT_EQ(r.stats.subspaces, 4u) << "seed " << seed;
     EXPECT_EQ(r.stats.manifolds.localSlices, 0u) << "seed " << seed;
   }
   const TwoRobotResult tight = plan(pacmanScene(0.98), 1);
-  ASSERT_EQ(tight.status, MmsResult::Status::Found);
+  ASSERT_EQ(tight.status, PlanStatus::Found);
   EXPECT_GT(tight.stats.manifolds.localSlices, 0u);
 }
 
 TEST(TwoRobots, SameSeedSamePath) {
   const Scene s = loadScene(scenario("two-robots/pacman-0.5.json"));
   const TwoRobotResult a = plan(s, 3), b = plan(s, 3);
-  ASSERT_EQ(a.status, MmsResult::Status::Found);
+  ASSERT_EQ(a.status, PlanStatus::Found);
   EXPECT_EQ(a.waypoints, b.waypoints);
 }
 

@@ -15,18 +15,6 @@ namespace {
 
 using Type = ParamSpec::Type;
 
-PlanStatus statusOf(MmsResult::Status s) {
-  switch (s) {
-    case MmsResult::Status::Found:
-      return PlanStatus::Found;
-    case MmsResult::Status::Cancelled:
-      return PlanStatus::Cancelled;
-    case MmsResult::Status::NotFound:
-      break;
-  }
-  return PlanStatus::NotFound;
-}
-
 // What both MMS planners report alike: the sizes, the manifolds' cells and arcs, and the
 // phases from the lines on. `first` are the phases before those (how slices are built).
 template <class Stats>
@@ -78,7 +66,7 @@ PlanStatistics statisticsOf(const TwoRobotStats& s) {
 template <class Result>
 PlanResult planResultOf(const Result& r, const std::map<std::string, double>& parameters) {
   PlanResult out;
-  out.status = statusOf(r.status);
+  out.status = r.status;
   out.waypoints = r.waypoints;
   out.certificate = r.certificate;
   out.stats = statisticsOf(r.stats);

@@ -19,10 +19,9 @@ class OmplAdapter : public Planner {
   PlanResult solve(const Termination& stop, const Progress&) override {
     const OmplResult r = planWithOmpl(scene_, settings_, stop);
     PlanResult out;
-    out.status = r.status == OmplResult::Status::Found         ? PlanStatus::Found
-                 : r.status == OmplResult::Status::Uncertified ? PlanStatus::Uncertified
-                 : stop.cancelled()                            ? PlanStatus::Cancelled
-                                                               : PlanStatus::NotFound;
+    // OMPL does not tell a cancelled run from one out of time.
+    out.status =
+        r.status == PlanStatus::NotFound && stop.cancelled() ? PlanStatus::Cancelled : r.status;
     out.waypoints = r.waypoints;
     out.certificate = r.certificate;
     out.stats.seconds = r.seconds;

@@ -5,10 +5,10 @@
 #include <stdexcept>
 
 #include "check/PathChecker.h"
+#include "io/PathIO.h"
 #include "manifolds/CellSampling.h"
 #include "planner/MmsPlanner.h"
 #include "planner/TwoRobotPlanner.h"
-#include "io/PathIO.h"
 
 namespace mms {
 
@@ -122,7 +122,7 @@ bool DisassemblyPlanner::trySingle(size_t part, const Termination& stop, Disasse
   settings.seed = attemptSeed_++;
   MmsPlanner planner(step, 0, settings);
   const MmsResult r = planner.solve(pose_[part], goal, stop);
-  if (r.status != MmsResult::Status::Found) return false;
+  if (r.status != PlanStatus::Found) return false;
   record({{part}, {part}, std::move(step), r.waypoints, watch.seconds()}, out);
   return true;
 }
@@ -160,7 +160,7 @@ bool DisassemblyPlanner::tryPair(size_t a, size_t b, int returning, size_t round
   settings.maxRounds = rounds;
   TwoRobotPlanner planner(step, settings);
   const TwoRobotResult r = planner.solve(Termination(stop.secondsLeft(), stop.cancelFlag()));
-  if (r.status != MmsResult::Status::Found) return false;
+  if (r.status != PlanStatus::Found) return false;
   std::vector<size_t> removed;
   if (returning != 0) removed.push_back(a);
   if (returning != 1) removed.push_back(b);

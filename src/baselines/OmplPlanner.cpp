@@ -240,7 +240,7 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
     r.waypoints.push_back(q);
   }
   r.certificate = checkPath(scene, checker, r.waypoints);
-  r.status = r.certificate.ok ? OmplResult::Status::Found : OmplResult::Status::Uncertified;
+  r.status = r.certificate.ok ? PlanStatus::Found : PlanStatus::Uncertified;
   if (!r.certificate.ok) r.waypoints.clear();
   return r;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "check/PathChecker.h"
+#include "mms/Planner.h"
 #include "mms/Termination.h"
 
 namespace mms {
@@ -27,11 +28,11 @@ struct OmplSettings {
 };
 
 struct OmplResult {
-  enum class Status { Found, NotFound, Uncertified } status = Status::NotFound;
-  std::vector<Config> waypoints;  // certified when Found
-  PathCheckResult certificate;    // why an OMPL path was refused, when Uncertified
-  double seconds = 0;             // planning time (OMPL's solve)
-  size_t states = 0;              // vertices of the planner's graph or tree
+  PlanStatus status = PlanStatus::NotFound;  // Found, NotFound or Uncertified
+  std::vector<Config> waypoints;             // certified when Found
+  PathCheckResult certificate;               // why an OMPL path was refused, when Uncertified
+  double seconds = 0;                        // planning time (OMPL's solve)
+  size_t states = 0;                         // vertices of the planner's graph or tree
 };
 
 /// Plans all robots of the scene jointly (SE(2) per rigid robot, R^2 per translating one).

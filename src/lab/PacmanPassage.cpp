@@ -27,7 +27,7 @@ PacmanPassage measurePacmanPassage(double tightness, const PacmanPassageSettings
   TwoRobotPlanner planner(scene, ts);
   TwoRobotResult res = planner.solve(Termination(settings.timeLimit));
   out.planSeconds = res.stats.totalSeconds;
-  if (res.status != MmsResult::Status::Found) return out;
+  if (res.status != PlanStatus::Found) return out;
   out.found = true;
 
   const CollisionChecker checker(scene);

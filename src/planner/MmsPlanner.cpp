@@ -78,7 +78,7 @@ void MmsPlanner::addNextSlice() {
   ahead_.pop_front();
 }
 
-MmsResult MmsPlanner::finish(MmsResult result, MmsResult::Status status, double seconds) {
+MmsResult MmsPlanner::finish(MmsResult result, PlanStatus status, double seconds) {
   stats_.graphNodes = graph_.nodeCount();
   stats_.graphEdges = graph_.edgeCount();
   stats_.totalSeconds += seconds;
@@ -89,26 +89,25 @@ MmsResult MmsPlanner::finish(MmsResult result, MmsResult::Status status, double 
 
 // A translate-only robot has a 2-D C-space: the one slice at its angle is its exact free
 // space, so start and goal are connected iff they lie in the same cell. Complete, no sampling.
-MmsResult::Status MmsPlanner::solveTranslation(const Pose& start, const Pose& goal,
-                                               MmsResult& result) {
+PlanStatus MmsPlanner::solveTranslation(const Pose& start, const Pose& goal, MmsResult& result) {
   if (slices().empty()) addSlice(start.theta);
   const Slice& s = slices().front();
   const int a = s.locate({start.x, start.y}), b = s.locate({goal.x, goal.y});
-  if (a < 0 || a != b) return MmsResult::Status::NotFound;
+  if (a < 0 || a != b) return PlanStatus::NotFound;
   const auto route = routeInCell(s.cell(a), [&](Vec2 p) { return s.locate(p) == a; },
                                  {start.x, start.y}, {goal.x, goal.y});
-  if (!route) return MmsResult::Status::NotFound;
+  if (!route) return PlanStatus::NotFound;
   std::vector<Config> w;
   for (Vec2 p : *route) w.push_back({p.x, p.y, start.theta});
   shortcutPath(scene_, checker_, rng_, settings_.shortcutAttempts, w);
   result.certificate = checkPath(scene_, checker_, w);
   if (!result.certificate.ok) {
     ++stats_.rejectedPaths;
-    return MmsResult::Status::NotFound;
+    return PlanStatus::NotFound;
   }
   stats_.pathCells = stats_.pathManifolds = 1;
   result.waypoints = std::move(w);
-  return MmsResult::Status::Found;
+  return PlanStatus::Found;
 }
 
 MmsResult MmsPlanner::solve(const Pose& start, const Pose& goal, const Termination& stop,
@@ -119,8 +118,7 @@ MmsResult MmsPlanner::solve(const Pose& start, const Pose& goal, const Terminati
     return solveRounds(start, goal, stop, progress);
   } catch (const Stopped&) {
     // The manifold under construction is dropped; the roadmap stays as it was before it.
-    return finish(MmsResult{},
-                  stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound,
+    return finish(MmsResult{}, stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound,
                   total.seconds());
   }
 }
@@ -132,7 +130,7 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
   scene_.robots[0].start = start;
   scene_.robots[0].goal = goal;
   if (scene_.robots[0].motion == Motion::Translate) {
-    const MmsResult::Status status = solveTranslation(start, goal, result);
+    const PlanStatus status = solveTranslation(start, goal, result);
     return finish(result, status, total.seconds());  // timed after the solve, which counts
   }
   // Start and goal enter through lines at their positions (a line holds every angle).
@@ -141,15 +139,14 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
                goalLine = sub.addLine({goal.x, goal.y});
   const long from = sub.lineNodeAt(startLine, start.theta),
              to = sub.lineNodeAt(goalLine, goal.theta);
-  if (from < 0 || to < 0)
-    return finish(result, MmsResult::Status::NotFound, total.seconds());  // not free
+  if (from < 0 || to < 0) return finish(result, PlanStatus::NotFound, total.seconds());  // not free
 
   size_t targetSlices = std::max(slices().size(), settings_.nTheta);
   size_t targetLines = std::max(lines().size(), settings_.nLines);
   Stopwatch sinceReport;
   auto report = [&](bool force) {
     if (!progress || (!force && sinceReport.seconds() < 1.0)) return;
-    MmsStats now = finish(result, MmsResult::Status::NotFound, 0).stats;
+    MmsStats now = finish(result, PlanStatus::NotFound, 0).stats;
     progress(now);
     sinceReport = Stopwatch();
   };
@@ -184,12 +181,11 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
     stats_.pathManifolds = graph_.footprint(o.nodes).manifolds;
     for (size_t v : o.nodes) result.cells.push_back(graph_.node(v));
     result.waypoints = std::move(o.motion.waypoints);
-    return finish(result, MmsResult::Status::Found, total.seconds());
+    return finish(result, PlanStatus::Found, total.seconds());
   }
-  return finish(result,
-                o.end == RoundsOutcome::End::Cancelled ? MmsResult::Status::Cancelled
-                                                       : MmsResult::Status::NotFound,
-                total.seconds());
+  return finish(
+      result, o.end == RoundsOutcome::End::Cancelled ? PlanStatus::Cancelled : PlanStatus::NotFound,
+      total.seconds());
 }
 
 }  // namespace mms

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "check/PathChecker.h"
+#include "mms/Planner.h"
 #include "mms/Termination.h"
 #include "planner/Subspace.h"
 #include "util/Random.h"
@@ -58,7 +59,7 @@ struct MmsStats {
 };
 
 struct MmsResult {
-  enum class Status { Found, NotFound, Cancelled } status = Status::NotFound;
+  PlanStatus status = PlanStatus::NotFound;    // Found, NotFound or Cancelled
   std::vector<Config> waypoints;               // the robot's (x, y, theta), certified when Found
   std::vector<ConnectivityGraph::Node> cells;  // the graph path: line arcs and slice cells
   PathCheckResult certificate;
@@ -87,8 +88,8 @@ class MmsPlanner {
   Vec2 nextLinePoint();
   void addSlice(double theta);
   void addNextSlice();
-  MmsResult::Status solveTranslation(const Pose& start, const Pose& goal, MmsResult& result);
-  MmsResult finish(MmsResult result, MmsResult::Status status, double seconds);
+  PlanStatus solveTranslation(const Pose& start, const Pose& goal, MmsResult& result);
+  MmsResult finish(MmsResult result, PlanStatus status, double seconds);
 
   Scene scene_;  // a one-robot copy: the planned robot only
   MmsSettings settings_;

@@ -204,7 +204,7 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
   return subspaces_.size() - 1;
 }
 
-TwoRobotResult TwoRobotPlanner::finish(TwoRobotResult r, MmsResult::Status status) {
+TwoRobotResult TwoRobotPlanner::finish(TwoRobotResult r, PlanStatus status) {
   stats_.graphNodes = graph_.nodeCount();
   stats_.graphEdges = graph_.edgeCount();
   stats_.totalSeconds = clock_.seconds();
@@ -222,7 +222,7 @@ TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
   } catch (const Stopped&) {
     // The manifold under construction is dropped (see StopScope).
     return finish(TwoRobotResult{},
-                  stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
+                  stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound);
   }
 }
 
@@ -231,8 +231,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
   TwoRobotResult result;
   buildBaseSlices(stop);
   if (stop())
-    return finish(result,
-                  stop.cancelled() ? MmsResult::Status::Cancelled : MmsResult::Status::NotFound);
+    return finish(result, stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound);
   // Start and goal fixings: each robot held at its start and at its goal. A translating
   // robot's poses lie in its one slice; a rigid robot's on lines 0 (start) and 1 (goal).
   std::array<Fixing, 2> start, goal;
@@ -244,7 +243,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
   for (const Fixing& f : {start[0], start[1], goal[0], goal[1]}) addSubspace(f, stop);
   // Robot 0 moves in the subspace holding robot 1 at its start (index 1) / goal (index 3).
   const long from = nodeFor(*subspaces_[1], start[0]), to = nodeFor(*subspaces_[3], goal[0]);
-  if (from < 0 || to < 0) return finish(result, MmsResult::Status::NotFound);
+  if (from < 0 || to < 0) return finish(result, PlanStatus::NotFound);
   from_ = from;
   to_ = to;
   sliceNarrowArcsIfDisconnected();
@@ -264,7 +263,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
       if (!grow(r, stop)) exhausted[r] = true;
       sliceNarrowArcsIfDisconnected();
       if (progress && sinceReport.seconds() >= 1.0) {
-        progress(finish(result, MmsResult::Status::NotFound).stats);
+        progress(finish(result, PlanStatus::NotFound).stats);
         sinceReport = Stopwatch();
       }
     }
@@ -275,7 +274,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
   };
   h.refused = [&] { sliceNarrowArcsNow(); };
   h.report = [&] {
-    if (progress) progress(finish(result, MmsResult::Status::NotFound).stats);
+    if (progress) progress(finish(result, PlanStatus::NotFound).stats);
   };
   h.next = [&] {
     if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds) return false;
@@ -299,10 +298,10 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     stats_.pathManifolds = used.manifolds;
     stats_.pathSubspaces = used.subspaces;
     result.waypoints = std::move(o.motion.waypoints);
-    return finish(result, MmsResult::Status::Found);
+    return finish(result, PlanStatus::Found);
   }
-  return finish(result, o.end == RoundsOutcome::End::Cancelled ? MmsResult::Status::Cancelled
-                                                               : MmsResult::Status::NotFound);
+  return finish(result, o.end == RoundsOutcome::End::Cancelled ? PlanStatus::Cancelled
+                                                               : PlanStatus::NotFound);
 }
 
 }  // namespace mms

@@ -73,7 +73,7 @@ struct TwoRobotStats {
 };
 
 struct TwoRobotResult {
-  MmsResult::Status status = MmsResult::Status::NotFound;
+  PlanStatus status = PlanStatus::NotFound;
   std::vector<Config> waypoints;  // both robots' (x, y, theta), certified when Found
   PathCheckResult certificate;
   TwoRobotStats stats;
@@ -117,7 +117,7 @@ class TwoRobotPlanner {
   void sliceNarrowArcsNow();
   size_t angleCount(size_t robot) const;
   void addAngles(size_t robot, const std::vector<double>& thetas, const Termination& stop);
-  TwoRobotResult finish(TwoRobotResult r, MmsResult::Status status);
+  TwoRobotResult finish(TwoRobotResult r, PlanStatus status);
 
   Scene scene_;
   TwoRobotSettings settings_;
