@@ -221,7 +221,8 @@ TEST(BenchCommand, BadOptionsExitTwo) {
   const std::string scene = quote(scenario("translating/cup.json"));
   for (const std::string& opts :
        {std::string("--shard 3/2"), std::string("--planners mms,astar"), std::string("--param prm"),
-        std::string("--sweep-pacman 1.5"), std::string("--param \"mms=--threads many\"")}) {
+        std::string("--sweep-pacman 1.5"), std::string("--param \"mms=--threads many\""),
+        std::string("--param \"prm=--n-theta 4\""), std::string("--param \"astar=--k 4\"")}) {
     const Outcome r = runMms("bench " + scene + " " + opts + " -o " + quote(dir.path("x")));
     EXPECT_EQ(r.code, 2) << opts;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << opts << ": " << r.err;

@@ -24,6 +24,7 @@
 #include "io/RunSummary.h"
 #include "io/SceneIO.h"
 #include "mms/Errors.h"
+#include "mms/Planner.h"
 #include "scenarios/Generators.h"
 #include "util/AtomicFile.h"
 #include "util/MemoryLimit.h"
@@ -97,6 +98,21 @@ void fillFromStats(RunRecord& r, const std::string& statsFile) {
     r.detail = s.certificate.reason;
   } catch (const std::exception&) {
     r.detail = "unreadable statistics";
+  }
+}
+
+// A planner option that the planner does not declare would fail every run of the group:
+// refuse it before the first run, naming it.
+void checkParam(const std::string& planner, const std::string& args) {
+  const PlannerInfo* info = findPlanner(planner);
+  if (!info) throw InputError("--param: unknown planner '" + planner + "'");
+  for (const std::string& token : split(args, ' ')) {
+    if (token.rfind("--", 0) != 0) continue;  // a value
+    const std::string name = token.substr(2, token.find('=') - 2);
+    const bool declared = std::any_of(info->params.begin(), info->params.end(),
+                                      [&](const ParamSpec& s) { return s.name == name; });
+    if (!declared)
+      throw InputError("--param: " + token + " is not a parameter of planner " + planner);
   }
 }
 
@@ -187,7 +203,9 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
     const size_t eq = p.find('=');
     if (eq == std::string::npos || eq == 0)
       throw InputError("--param: expected PLANNER=ARGS, found '" + p + "'");
-    params[p.substr(0, eq)] = p.substr(eq + 1);
+    const std::string planner = p.substr(0, eq);
+    checkParam(planner, p.substr(eq + 1));
+    params[planner] = p.substr(eq + 1);
   }
 
   std::vector<Job> jobs;
