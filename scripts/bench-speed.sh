@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The speed table of docs/benchmarks.md (issue 8): MMS and OMPL's planners on the target scenes
+# The speed table of docs/benchmarks.md: MMS and OMPL's planners on the target scenes
 # in one `mms bench` run, MMS on both cores (--threads 2). The report's first table compares MMS
 # with the best other planner per scene and counts the manifolds the solution uses against those
 # built (the oracle's distance). Usage: scripts/bench-speed.sh [OUTPUT_DIR] (default bench-speed)
