@@ -247,3 +247,26 @@ TEST(Registry, PlanOptionsComeFromTheDeclarations) {
   EXPECT_EQ(s.status, PlanStatus::Found);
   EXPECT_EQ(s.parameters.at("n_lines"), 64);
 }
+
+// The public API's files: a result written as a path file reads back to the same waypoints,
+// with the planner's parameters and statistics, and `mms check` certifies it.
+TEST(PublicApi, PathFilesRoundTripAndCertify) {
+  TempDir dir;
+  const std::string sceneFile = scenario("one-robot/bar-slot.json");
+  std::vector<std::string> notes;
+  const Scene s = readSceneFile(sceneFile, &notes);
+  EXPECT_TRUE(notes.empty());
+  const PlanResult r = makePlanner(kDefaultPlanner, s)->solve(Termination(planSeconds(20)));
+  ASSERT_TRUE(r.found());
+  const std::string file = dir.path("p.json");
+  writePathFile(s, r, kDefaultPlanner, 1, file);
+  EXPECT_EQ(readPathFile(file, s), r.waypoints);
+  const nlohmann::json j = nlohmann::json::parse(readFile(file));
+  EXPECT_EQ(j["planner"], "mms");
+  EXPECT_EQ(j["parameters"]["n_theta"], 16);
+  EXPECT_EQ(j["statistics"]["graph_nodes"], r.stats.graphNodes);
+  EXPECT_FALSE(j["statistics"].contains("seconds"));  // same seed, same file
+  EXPECT_EQ(runMms("check " + quote(sceneFile) + " " + quote(file)).code, 0);
+  EXPECT_THROW(readPathFile(dir.file("bad.json", "{}"), s), InputError);
+  EXPECT_THROW(readSceneFile(dir.file("bad-scene.json", "[1]")), InputError);
+}
