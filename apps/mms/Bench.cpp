@@ -1,6 +1,4 @@
 // mms bench and mms bench-merge: the command line over the library's benchmark runner.
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 

@@ -2,7 +2,6 @@
 #include <filesystem>
 
 #include "Commands.h"
-#include "geometry/CollisionChecker.h"
 #include "io/PathIO.h"
 #include "io/QueriesIO.h"
 #include "io/RunSummary.h"
