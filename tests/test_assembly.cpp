@@ -50,7 +50,7 @@ int alternations(const std::vector<Config>& w) {
 TEST(ConnectivityGraph, IncrementalComponentsAgreeWithSearch) {
   ConnectivityGraph g;
   Random rng(5);
-  for (int i = 0; i < 200; ++i) g.addNode({ConnectivityGraph::Kind::SliceCell, 0, 0, 0});
+  for (int i = 0; i < 200; ++i) g.addNode({0, 0});
   for (int e = 0; e < 150; ++e) g.addEdge(rng.below(200), rng.below(200));
   for (int q = 0; q < 500; ++q) {
     const size_t a = rng.below(200), b = rng.below(200);

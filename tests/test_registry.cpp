@@ -168,7 +168,7 @@ struct LoopStats {
 // complete round doubles the target.
 TEST(Rounds, SearchEarlyCompleteTheRoundAfterARefusalThenDouble) {
   ConnectivityGraph g;
-  for (int i = 0; i < 6; ++i) g.addNode({ConnectivityGraph::Kind::SliceCell, 0, 0, 0});
+  for (int i = 0; i < 6; ++i) g.addNode({0, 0});
   size_t built = 0, target = 2, searches = 0, refusals = 0;
   std::vector<size_t> builtAtSearch;
   RoundHooks h;
@@ -204,7 +204,7 @@ TEST(Rounds, SearchEarlyCompleteTheRoundAfterARefusalThenDouble) {
 
 TEST(Rounds, GiveUpAndStop) {
   ConnectivityGraph g;
-  for (int i = 0; i < 2; ++i) g.addNode({ConnectivityGraph::Kind::LineArc, 0, 0, 0});
+  for (int i = 0; i < 2; ++i) g.addNode({0, 0});
   size_t built = 0, target = 1, rounds = 0;
   RoundHooks h;
   h.growing = [&] { return built < target; };

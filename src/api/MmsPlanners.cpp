@@ -131,8 +131,9 @@ class OneRobotMms : public Planner {
     PlanResult out = planResultOf(r, parameters_);
     if (picture_ && out.found()) {
       for (const ConnectivityGraph::Node& n : r.cells)
-        if (n.kind == ConnectivityGraph::Kind::SliceCell)
-          out.roadmap.cells.push_back(planner_.slices()[n.manifold].cell(n.cell));
+        if (const auto* s =
+                dynamic_cast<const SliceManifold*>(&planner_.roadmap().manifold(n.manifold)))
+          out.roadmap.cells.push_back(s->slice().cell(n.cell));
       for (const Line& l : planner_.lines()) out.roadmap.points.push_back(l.point());
     }
     return out;

@@ -2,8 +2,6 @@
 
 #include <boost/graph/breadth_first_search.hpp>
 #include <boost/pending/disjoint_sets.hpp>
-#include <set>
-#include <tuple>
 
 namespace mms {
 
@@ -21,16 +19,6 @@ size_t ConnectivityGraph::addNode(const Node& n) {
 void ConnectivityGraph::addEdge(size_t a, size_t b) {
   boost::add_edge(a, b, g_);
   Sets(rank_.data(), parent_.data()).union_set(a, b);
-}
-
-ConnectivityGraph::Footprint ConnectivityGraph::footprint(const std::vector<size_t>& path) const {
-  std::set<std::tuple<uint32_t, Kind, uint32_t>> manifolds;
-  std::set<uint32_t> subspaces;
-  for (const size_t v : path) {
-    manifolds.insert({nodes_[v].subspace, nodes_[v].kind, nodes_[v].manifold});
-    subspaces.insert(nodes_[v].subspace);
-  }
-  return {manifolds.size(), subspaces.size()};
 }
 
 bool ConnectivityGraph::connected(size_t a, size_t b) const {

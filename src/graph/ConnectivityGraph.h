@@ -1,6 +1,7 @@
 #pragma once
 // The connectivity graph of MMS: one node per free-space cell, one edge per pair of cells
-// (of manifolds of different families) that intersect. Boost Graph Library underneath.
+// (of manifolds of different families) that intersect. Boost Graph Library underneath. It
+// knows cells by number only: Roadmap maps them to manifolds.
 #include <boost/graph/adjacency_list.hpp>
 #include <cstdint>
 #include <optional>
@@ -10,11 +11,8 @@ namespace mms {
 
 class ConnectivityGraph {
  public:
-  enum class Kind : uint8_t { SliceCell, LineArc };
   struct Node {
-    Kind kind;
-    uint32_t subspace;  // which subspace (robot moving, the others held) the manifold belongs to
-    uint32_t manifold;  // slice or line index within the subspace
+    uint32_t manifold;  // the caller's number for the manifold (Roadmap: its table index)
     uint32_t cell;      // FSC index within the manifold
   };
 
@@ -30,13 +28,6 @@ class ConnectivityGraph {
 
   /// Fewest-cells path from `from` to `to` (inclusive), if they are connected.
   std::optional<std::vector<size_t>> path(size_t from, size_t to) const;
-
-  /// How many distinct manifolds (and subspaces) the cells `path` lie on: what an oracle that
-  /// built only the manifolds of the solution would have built.
-  struct Footprint {
-    size_t manifolds = 0, subspaces = 0;
-  };
-  Footprint footprint(const std::vector<size_t>& path) const;
 
  private:
   using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;

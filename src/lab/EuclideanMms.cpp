@@ -49,8 +49,7 @@ EuclideanMmsResult solveEuclideanMms(const BoxSpace& space, const Point& start, 
     Manifold m{family, SubspaceCells(space, subspaceFixing(settings.families[family], point)),
                graph.nodeCount()};
     uint32_t index = uint32_t(manifolds.size());
-    for (size_t c = 0; c < m.cells.components(); ++c)
-      graph.addNode({ConnectivityGraph::Kind::SliceCell, uint32_t(family), index, uint32_t(c)});
+    for (size_t c = 0; c < m.cells.components(); ++c) graph.addNode({index, uint32_t(c)});
     result.cells += m.cells.cellCount();
     // Every earlier manifold of another family it meets: each FSC of the intersection lies in
     // one FSC of each, so one representative point per FSC joins them.

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "path/CellRoute.h"
-#include "planner/Motion.h"
+#include "manifolds/CellRoute.h"
+#include "path/Motion.h"
 #include "planner/Rounds.h"
 #include "util/Parallel.h"
 
@@ -37,7 +37,7 @@ MmsPlanner::MmsPlanner(const Scene& scene, size_t robot, MmsSettings settings)
       rng_(settings.seed),
       angles_(settings.nTheta, rng_.uniform(0, 2 * M_PI)) {
   subspaces_.push_back(std::make_unique<Subspace>(0, contactScene_, checker_, 0,
-                                                  std::vector<std::pair<size_t, Pose>>{}, graph_,
+                                                  std::vector<std::pair<size_t, Pose>>{}, roadmap_,
                                                   stats_.manifolds));
 }
 
@@ -79,8 +79,8 @@ void MmsPlanner::addNextSlice() {
 }
 
 MmsResult MmsPlanner::finish(MmsResult result, PlanStatus status, double seconds) {
-  stats_.graphNodes = graph_.nodeCount();
-  stats_.graphEdges = graph_.edgeCount();
+  stats_.graphNodes = roadmap_.nodeCount();
+  stats_.graphEdges = roadmap_.edgeCount();
   stats_.totalSeconds += seconds;
   result.status = status;
   result.stats = stats_;
@@ -165,7 +165,7 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
     report(false);
   };
   h.motion = [&](const std::vector<size_t>& nodes) {
-    return certifiedMotion(scene_, checker_, graph_, subspaces_, nodes, rng_,
+    return certifiedMotion(scene_, checker_, roadmap_, nodes, rng_,
                            {settings_.shortcutAttempts, false});
   };
   h.report = [&] { report(true); };
@@ -174,12 +174,12 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
     targetLines *= 2;
     return true;
   };
-  RoundsOutcome o = runRounds(h, graph_, size_t(from), size_t(to), stop, stats_);
+  RoundsOutcome o = runRounds(h, roadmap_.graph(), size_t(from), size_t(to), stop, stats_);
   result.certificate = o.motion.certificate;
   if (o.end == RoundsOutcome::End::Found) {
     stats_.pathCells = o.nodes.size();
-    stats_.pathManifolds = graph_.footprint(o.nodes).manifolds;
-    for (size_t v : o.nodes) result.cells.push_back(graph_.node(v));
+    stats_.pathManifolds = roadmap_.footprint(o.nodes).manifolds;
+    for (size_t v : o.nodes) result.cells.push_back(roadmap_.graph().node(v));
     result.waypoints = std::move(o.motion.waypoints);
     return finish(result, PlanStatus::Found, total.seconds());
   }

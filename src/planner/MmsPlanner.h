@@ -61,7 +61,7 @@ struct MmsStats {
 struct MmsResult {
   PlanStatus status = PlanStatus::NotFound;    // Found, NotFound or Cancelled
   std::vector<Config> waypoints;               // the robot's (x, y, theta), certified when Found
-  std::vector<ConnectivityGraph::Node> cells;  // the graph path: line arcs and slice cells
+  std::vector<ConnectivityGraph::Node> cells;  // the graph path: (roadmap manifold, cell)
   PathCheckResult certificate;
   MmsStats stats;
 };
@@ -77,6 +77,7 @@ class MmsPlanner {
   MmsResult solve(const Pose& start, const Pose& goal, const Termination& stop,
                   const std::function<void(const MmsStats&)>& progress = {});
 
+  const Roadmap& roadmap() const { return roadmap_; }
   const std::vector<Slice>& slices() const { return subspace().slices(); }
   const std::vector<Line>& lines() const { return subspace().lines(); }
 
@@ -98,7 +99,7 @@ class MmsPlanner {
   SliceWorld sliceWorld_;
   Random rng_;
   AngleSequence angles_;
-  ConnectivityGraph graph_;
+  Roadmap roadmap_;
   std::vector<std::unique_ptr<Subspace>> subspaces_;  // exactly one: no robot is held
   // Slices of the next angles, built settings_.threads at a time ahead of their turn; they
   // join the roadmap one by one, so early stops do not depend on the thread count.

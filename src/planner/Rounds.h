@@ -10,7 +10,7 @@
 
 #include "graph/ConnectivityGraph.h"
 #include "mms/Termination.h"
-#include "planner/Motion.h"
+#include "path/Motion.h"
 
 namespace mms {
 

@@ -57,54 +57,44 @@ Scene withContactShapes(const Scene& scene, const CollisionChecker& checker) {
 }
 
 Subspace::Subspace(uint32_t id, const Scene& scene, const CollisionChecker& checker, size_t moving,
-                   std::vector<std::pair<size_t, Pose>> held, ConnectivityGraph& graph,
+                   std::vector<std::pair<size_t, Pose>> held, Roadmap& roadmap,
                    SubspaceStats& stats)
-    : id_(id),
+    : frame_{id, scene.robots.size(), moving, std::move(held)},
       checker_(checker),
-      moving_(moving),
-      held_(std::move(held)),
-      heldShapes_(movedShapes(scene, held_)),
+      heldShapes_(movedShapes(scene, frame_.held)),
       heldRings_(placedRings(heldShapes_)),
       lineWorld_(scene, moving, heldRings_),
-      graph_(graph),
+      roadmap_(roadmap),
       stats_(stats) {}
 
 bool Subspace::free(const Pose& q) const {
-  if (!checker_.robotFree(moving_, q)) return false;
-  for (const auto& [robot, pose] : held_)
-    if (!checker_.robotsDisjoint(moving_, q, robot, pose)) return false;
+  if (!checker_.robotFree(frame_.moving, q)) return false;
+  for (const auto& [robot, pose] : frame_.held)
+    if (!checker_.robotsDisjoint(frame_.moving, q, robot, pose)) return false;
   return true;
 }
 
-void Subspace::connect(const Slice& slice, const std::vector<size_t>& nodes, size_t l) {
-  const int a = lines_[l].arcContaining(slice.theta());
-  if (a < 0) return;
-  const int f = slice.locate(lines_[l].point());
-  if (f >= 0) graph_.addEdge(nodes[size_t(f)], lineNodes_[l][size_t(a)]);
-}
-
-std::vector<size_t> Subspace::addCellNodes(const Slice& slice, uint32_t manifold) {
-  std::vector<size_t> nodes;
-  for (size_t f = 0; f < slice.fscCount(); ++f)
-    nodes.push_back(
-        graph_.addNode({ConnectivityGraph::Kind::SliceCell, id_, manifold, uint32_t(f)}));
+uint32_t Subspace::addSliceManifold(const std::vector<Slice>& store, uint32_t index) {
+  const Slice& slice = store[index & ~kLocal];
+  const uint32_t id = roadmap_.add(std::make_unique<SliceManifold>(frame_, store, index & ~kLocal),
+                                   frame_.id, index);
   ++stats_.slices;
   stats_.sliceCells += slice.fscCount();
-  return nodes;
+  return id;
 }
 
 void Subspace::addLocalOverlay(Slice slice) {
   localSlices_.push_back(std::move(slice));
   const size_t k = localSlices_.size() - 1;
-  localNodes_.push_back(addCellNodes(localSlices_[k], kLocal | uint32_t(k)));
+  localIds_.push_back(addSliceManifold(localSlices_, kLocal | uint32_t(k)));
   ++stats_.localSlices;
-  connectToLines(localSlices_[k], localNodes_[k]);
+  connectToLines(localIds_.back());
 }
 
-void Subspace::connectToLines(const Slice& slice, const std::vector<size_t>& nodes) {
+// A line's arc is found by one binary search, a slice's cell by point location: lines first.
+void Subspace::connectToLines(uint32_t slice) {
   Stopwatch watchConnect;
-  if (slice.fscCount() > 0)
-    for (size_t l = 0; l < lines_.size(); ++l) connect(slice, nodes, l);
+  for (const uint32_t line : lineIds_) roadmap_.join(line, slice);
   stats_.connectSeconds += watchConnect.seconds();
 }
 
@@ -120,8 +110,8 @@ size_t Subspace::addSlice(const Slice& base) {
 size_t Subspace::addOverlay(Slice slice) {
   slices_.push_back(std::move(slice));
   const size_t k = slices_.size() - 1;
-  sliceNodes_.push_back(addCellNodes(slices_[k], uint32_t(k)));
-  connectToLines(slices_[k], sliceNodes_[k]);
+  sliceIds_.push_back(addSliceManifold(slices_, uint32_t(k)));
+  connectToLines(sliceIds_.back());
   return k;
 }
 
@@ -131,17 +121,15 @@ size_t Subspace::addLine(Vec2 p) {
       lineWorld_, [this](const Pose& q) { return free(q); }, p, &stats_.lineStats);
   stats_.lineSeconds += watch.seconds();
   const size_t l = lines_.size() - 1;
-  std::vector<size_t> nodes;
-  for (size_t a = 0; a < lines_[l].arcs().size(); ++a)
-    nodes.push_back(
-        graph_.addNode({ConnectivityGraph::Kind::LineArc, id_, uint32_t(l), uint32_t(a)}));
-  lineNodes_.push_back(std::move(nodes));
+  const uint32_t id =
+      roadmap_.add(std::make_unique<LineManifold>(frame_, lines_, l), frame_.id, uint32_t(l));
+  lineIds_.push_back(id);
   ++stats_.lines;
   stats_.lineArcs += lines_[l].arcs().size();
   Stopwatch watchConnect;
   if (!lines_[l].arcs().empty()) {
-    for (size_t k = 0; k < slices_.size(); ++k) connect(slices_[k], sliceNodes_[k], l);
-    for (size_t k = 0; k < localSlices_.size(); ++k) connect(localSlices_[k], localNodes_[k], l);
+    for (const uint32_t slice : sliceIds_) roadmap_.join(id, slice);
+    for (const uint32_t slice : localIds_) roadmap_.join(id, slice);
   }
   stats_.connectSeconds += watchConnect.seconds();
   return l;
@@ -149,15 +137,15 @@ size_t Subspace::addLine(Vec2 p) {
 
 long Subspace::sliceNodeAt(size_t k, Vec2 p, bool knownFree) const {
   if (k >= slices_.size()) return -1;  // a subspace cut short by the time limit
-  if (knownFree && slices_[k].fscCount() == 1) return long(sliceNodes_[k][0]);
+  if (knownFree && slices_[k].fscCount() == 1) return long(roadmap_.node(sliceIds_[k], 0));
   const int f = slices_[k].locate(p);
-  return f < 0 ? -1 : long(sliceNodes_[k][f]);
+  return f < 0 ? -1 : long(roadmap_.node(sliceIds_[k], size_t(f)));
 }
 
 long Subspace::lineNodeAt(size_t l, double theta) const {
   if (l >= lines_.size()) return -1;
   const int a = lines_[l].arcContaining(theta);
-  return a < 0 ? -1 : long(lineNodes_[l][a]);
+  return a < 0 ? -1 : long(roadmap_.node(lineIds_[l], size_t(a)));
 }
 
 }  // namespace mms

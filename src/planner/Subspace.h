@@ -1,15 +1,16 @@
 #pragma once
 // One robot moves while the obstacles and any robots held at fixed poses stay: a 3-D C-space
 // approximated by slices (fixed angle) and lines (fixed position) whose free-space cells are
-// nodes of a shared connectivity graph. The one-robot planner uses one subspace; the two-robot
+// nodes of a shared roadmap. The one-robot planner uses one subspace; the two-robot
 // planner (recursive MMS, Section II of the paper) one per fixing of either robot.
 #include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
 
-#include "graph/ConnectivityGraph.h"
+#include "graph/Roadmap.h"
 #include "manifolds/Line.h"
+#include "manifolds/OneRobot.h"
 #include "manifolds/Slice.h"
 
 namespace mms {
@@ -37,19 +38,20 @@ double buildSlices(const SliceWorld& world, const std::vector<double>& thetas, u
 class Subspace {
  public:
   /// Robot `moving` of `scene` moves; each (robot, pose) in `held` stays put as an obstacle.
+  Subspace(const Subspace&) = delete;  // its manifolds point at its frame and vectors
+  Subspace& operator=(const Subspace&) = delete;
   Subspace(uint32_t id, const Scene& scene, const CollisionChecker& checker, size_t moving,
-           std::vector<std::pair<size_t, Pose>> held, ConnectivityGraph& graph,
-           SubspaceStats& stats);
+           std::vector<std::pair<size_t, Pose>> held, Roadmap& roadmap, SubspaceStats& stats);
 
-  uint32_t id() const { return id_; }
-  size_t moving() const { return moving_; }
-  const std::vector<std::pair<size_t, Pose>>& held() const { return held_; }
+  uint32_t id() const { return frame_.id; }
+  size_t moving() const { return frame_.moving; }
+  const std::vector<std::pair<size_t, Pose>>& held() const { return frame_.held; }
   const std::vector<Slice>& slices() const { return slices_; }
   /// Slices at angles of this subspace alone (not shared with the others), numbered from
-  /// kLocal in graph nodes.
+  /// kLocal in their roadmap entries' index.
   const std::vector<Slice>& localSlices() const { return localSlices_; }
   static constexpr uint32_t kLocal = 1u << 31;
-  /// The slice a graph node's `manifold` names: slices()[m], or localSlices()[m - kLocal].
+  /// The slice a roadmap entry's `index` names: slices()[m], or localSlices()[m - kLocal].
   const Slice& slice(uint32_t manifold) const {
     return manifold & kLocal ? localSlices_[manifold & ~kLocal] : slices_[manifold];
   }
@@ -78,23 +80,20 @@ class Subspace {
   bool free(const Pose& q) const;
 
  private:
-  void connect(const Slice& slice, const std::vector<size_t>& nodes, size_t line);
-  std::vector<size_t> addCellNodes(const Slice& slice, uint32_t manifold);
-  void connectToLines(const Slice& slice, const std::vector<size_t>& nodes);
+  uint32_t addSliceManifold(const std::vector<Slice>& store, uint32_t index);
+  void connectToLines(uint32_t slice);
 
-  uint32_t id_;
+  HeldFrame frame_;
   const CollisionChecker& checker_;
-  size_t moving_;
-  std::vector<std::pair<size_t, Pose>> held_;
   std::vector<MovedShape> heldShapes_;
   std::vector<Ring> heldRings_;  // the same in doubles, for lines
   LineWorld lineWorld_;
-  ConnectivityGraph& graph_;
+  Roadmap& roadmap_;
   SubspaceStats& stats_;
   std::vector<Slice> slices_;
   std::vector<Line> lines_;
   std::vector<Slice> localSlices_;
-  std::vector<std::vector<size_t>> sliceNodes_, lineNodes_, localNodes_;  // cell -> graph node
+  std::vector<uint32_t> sliceIds_, lineIds_, localIds_;  // roadmap ids of the manifolds
 };
 
 }  // namespace mms

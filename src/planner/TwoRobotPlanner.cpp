@@ -5,7 +5,7 @@
 #include <optional>
 #include <utility>
 
-#include "planner/Motion.h"
+#include "path/Motion.h"
 #include "planner/Rounds.h"
 #include "util/Parallel.h"
 
@@ -21,7 +21,9 @@ TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
       settings_(settings),
       checker_(scene_),
       contactScene_(withContactShapes(scene_, checker_)),
-      rng_(settings.seed) {
+      rng_(settings.seed),
+      sampler_(std::make_unique<MixedFixings>(settings.expandShare, settings.connectShare,
+                                              settings.connectSteps)) {
   for (size_t r = 0; r < 2; ++r) {
     translates_[r] = scene_.robots[r].motion == Motion::Translate;
     worlds_[r] = std::make_unique<SliceWorld>(contactScene_, r);
@@ -61,7 +63,7 @@ void TwoRobotPlanner::buildBaseSlices(const Termination& stop) {
 // slice k is always the overlay of base slice k.
 void TwoRobotPlanner::addAngles(size_t robot, const std::vector<double>& thetas,
                                 const Termination& stop) {
-  const size_t firstNode = graph_.nodeCount(), firstAngle = base_[robot].size();
+  const size_t firstNode = roadmap_.nodeCount(), firstAngle = base_[robot].size();
   if (stop()) return;
   stats_.baseSliceSeconds +=
       buildSlices(*worlds_[robot], thetas, settings_.threads, PointLocation::Auto,
@@ -141,7 +143,7 @@ void TwoRobotPlanner::sliceNarrowArcs(Subspace& sub) {
 // search then runs before 10-17 of them are built. They only join cells and arcs inside their
 // subspace (fixings are drawn at shared angles), so building them later loses no meeting point.
 void TwoRobotPlanner::sliceNarrowArcsIfDisconnected() {
-  if (from_ >= 0 && graph_.connected(size_t(from_), size_t(to_))) return;
+  if (from_ >= 0 && roadmap_.graph().connected(size_t(from_), size_t(to_))) return;
   sliceNarrowArcsNow();
 }
 
@@ -168,10 +170,10 @@ long TwoRobotPlanner::nodeFor(const Subspace& sub, const Fixing& f, bool knownFr
 
 size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop) {
   const size_t moving = 1 - held.robot;
-  const size_t firstNode = graph_.nodeCount();
+  const size_t firstNode = roadmap_.nodeCount();
   subspaces_.push_back(std::make_unique<Subspace>(
       uint32_t(subspaces_.size()), contactScene_, checker_, moving,
-      std::vector<std::pair<size_t, Pose>>{{held.robot, held.pose}}, graph_, stats_.manifolds));
+      std::vector<std::pair<size_t, Pose>>{{held.robot, held.pose}}, roadmap_, stats_.manifolds));
   fixings_.push_back(held);
   ++stats_.subspaces;
   ++stats_.fixings[held.robot];
@@ -196,7 +198,7 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
     if (here < 0) continue;
     const long there = nodeFor(*subspaces_[j], held, true);
     if (there < 0) continue;
-    graph_.addEdge(size_t(here), size_t(there));
+    roadmap_.addEdge(size_t(here), size_t(there));
     ++stats_.crossEdges;
   }
   stats_.crossSeconds += watch.seconds();
@@ -205,8 +207,8 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
 }
 
 TwoRobotResult TwoRobotPlanner::finish(TwoRobotResult r, PlanStatus status) {
-  stats_.graphNodes = graph_.nodeCount();
-  stats_.graphEdges = graph_.edgeCount();
+  stats_.graphNodes = roadmap_.nodeCount();
+  stats_.graphEdges = roadmap_.edgeCount();
   stats_.totalSeconds = clock_.seconds();
   r.status = status;
   r.stats = stats_;
@@ -260,7 +262,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
   h.grow = [&] {
     for (size_t r = 0; r < 2 && !stop(); ++r) {
       if (!wants(r)) continue;
-      if (!grow(r, stop)) exhausted[r] = true;
+      if (!sampler_->grow(r, *this, stop)) exhausted[r] = true;
       sliceNarrowArcsIfDisconnected();
       if (progress && sinceReport.seconds() >= 1.0) {
         progress(finish(result, PlanStatus::NotFound).stats);
@@ -269,7 +271,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     }
   };
   h.motion = [&](const std::vector<size_t>& nodes) {
-    return certifiedMotion(scene_, checker_, graph_, subspaces_, nodes, rng_,
+    return certifiedMotion(scene_, checker_, roadmap_, nodes, rng_,
                            {settings_.shortcutAttempts, /*oneRobotAtATime=*/true});
   };
   h.refused = [&] { sliceNarrowArcsNow(); };
@@ -290,13 +292,13 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
       }
     return true;
   };
-  RoundsOutcome o = runRounds(h, graph_, size_t(from), size_t(to), stop, stats_);
+  RoundsOutcome o = runRounds(h, roadmap_.graph(), size_t(from), size_t(to), stop, stats_);
   result.certificate = o.motion.certificate;
   if (o.end == RoundsOutcome::End::Found) {
     stats_.pathCells = o.nodes.size();
-    const auto used = graph_.footprint(o.nodes);
+    const auto used = roadmap_.footprint(o.nodes);
     stats_.pathManifolds = used.manifolds;
-    stats_.pathSubspaces = used.subspaces;
+    stats_.pathSubspaces = used.groups;
     result.waypoints = std::move(o.motion.waypoints);
     return finish(result, PlanStatus::Found);
   }

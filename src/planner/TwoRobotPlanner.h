@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "check/PathChecker.h"
+#include "planner/FixingSamplers.h"
 #include "planner/MmsPlanner.h"
 #include "planner/Subspace.h"
 
@@ -79,7 +80,7 @@ struct TwoRobotResult {
   TwoRobotStats stats;
 };
 
-class TwoRobotPlanner {
+class TwoRobotPlanner : private FixingHost {
  public:
   explicit TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings = {});
   ~TwoRobotPlanner();
@@ -88,24 +89,28 @@ class TwoRobotPlanner {
                        const std::function<void(const TwoRobotStats&)>& progress = {});
 
  private:
-  struct Fixing {
-    size_t robot;
-    Pose pose;
-    long angle;        // index into the robot's angle set, or -1
-    long specialLine;  // -1, or 0 / 1: start / goal position (lines 0 and 1 of every subspace)
-    long parent;       // the subspace whose cell it was drawn from, or -1
-  };
-  // Growth (TwoRobotGrowth.cpp): new fixings and the subspaces they hold.
+  // Growth (TwoRobotGrowth.cpp): what the fixing sampler sees, and the subspaces fixings hold.
   TwoRobotResult solveRounds(const Termination& stop,
                              const std::function<void(const TwoRobotStats&)>& progress);
   void buildBaseSlices(const Termination& stop);
   void addOverlays(size_t count,
                    const std::function<std::pair<Subspace*, const Slice*>(size_t)>& item);
-  bool grow(size_t robot, const Termination& stop);
-  Fixing fixingAt(size_t robot, const Slice& slice, size_t manifold, Vec2 p, long parent) const;
-  bool uniformFixing(size_t robot, Fixing& out);
-  bool frontierFixing(size_t robot, Fixing& out);
-  bool connectTowards(size_t robot, const Termination& stop);
+  // FixingHost
+  Random& rng() override { return rng_; }
+  const Box& bounds() const override { return scene_.bounds; }
+  bool translates(size_t robot) const override { return translates_[robot]; }
+  const std::vector<Slice>& baseSlices(size_t robot) const override { return base_[robot]; }
+  const Roadmap& roadmap() const override { return roadmap_; }
+  long startNode() const override { return from_; }
+  long goalNode() const override { return to_; }
+  const std::vector<size_t>& reachedCells(size_t robot) override;
+  const Box& cellBox(size_t node) const override { return cellBoxes_[node]; }
+  const Slice& sliceOf(size_t node) const override;
+  Fixing fixingAt(size_t robot, size_t angle, Vec2 p, long parent) const override;
+  size_t hold(const Fixing& f, const Termination& stop) override { return addSubspace(f, stop); }
+  long nodeWhereHeld(size_t k, size_t held) const override;
+  void countExpanded() override { ++stats_.expandedFixings; }
+
   void collectCells(size_t firstNode);
   bool reached(size_t node) const;
   std::vector<size_t> crossCandidates(const Fixing& held);
@@ -124,6 +129,7 @@ class TwoRobotPlanner {
   CollisionChecker checker_;
   Scene contactScene_;  // robots shrunk as the checker sees them: manifolds are built for them
   Random rng_;
+  std::unique_ptr<FixingSampler> sampler_;
   std::array<bool, 2> translates_;
   std::array<std::unique_ptr<SliceWorld>, 2> worlds_;
   std::array<std::unique_ptr<AngleSequence>, 2> angles_;
@@ -133,7 +139,7 @@ class TwoRobotPlanner {
   std::vector<Fixing> fixings_;  // fixings_[i] is held in subspaces_[i]
   std::vector<std::unique_ptr<Subspace>> subspaces_;
   std::vector<size_t> narrowPending_;  // subspaces whose narrow-arc slices are not built yet
-  ConnectivityGraph graph_;
+  Roadmap roadmap_;
   std::array<std::vector<size_t>, 2> cells_;    // per robot: slice-cell nodes where it moves
   std::array<std::vector<size_t>, 2> reached_;  // those connected to the start or goal
   size_t reachedScan_ = 0;                      // graph size at the last full scan

@@ -1,0 +1,60 @@
+#pragma once
+// The manifold seam: what the roadmap, the search and the path stage need of a manifold
+// family, and nothing else. MMS samples low-dimensional manifolds of the C-space, decomposes
+// each exactly into free-space cells (FSCs) and joins cells of manifolds that meet (the
+// paper, Section III). A family (fixed-angle slices, fixed-position lines, ...) is one class
+// implementing Manifold plus its rows in the meeting table (Meets.cpp); the graph, the search
+// and the motion along a graph path work on any family through this interface.
+#include <optional>
+#include <vector>
+
+#include "mms/Scene.h"
+
+namespace mms {
+
+/// A family's identity: one static object per family, compared by address.
+struct ManifoldFamily {
+  const char* name;
+};
+
+/// A manifold of the C-space of all the scene's robots (configurations of every robot, as
+/// Config), decomposed into cells numbered 0 .. cellCount() - 1.
+class Manifold {
+ public:
+  virtual ~Manifold() = default;
+  virtual const ManifoldFamily& family() const = 0;
+  virtual size_t cellCount() const = 0;
+  /// The cell whose interior holds q (a configuration on this manifold), or -1.
+  virtual long locate(const Config& q) const = 0;
+  /// A motion inside cell `cell` from `from` to `to`, both in the cell: the waypoints after
+  /// `from`, the last at `to` (angles up to whole turns: the motion unwinds them so the path
+  /// stays continuous). Nothing if no route is found.
+  virtual std::optional<std::vector<Config>> motion(size_t cell, const Config& from,
+                                                    const Config& to) const = 0;
+};
+
+/// A rule for one pair of families: whether two manifolds meet, and where (`at`, a
+/// configuration on both, written in place: joins run once per pair of manifolds, the
+/// roadmap's hottest loop, and allocate nothing). Every family here meets another in at most
+/// one point, so one configuration names the meeting; the cells that meet are the ones that
+/// locate it.
+using MeetRule = bool (*)(const Manifold& a, const Manifold& b, Config& at);
+struct MeetEntry {
+  const ManifoldFamily* a;
+  const ManifoldFamily* b;
+  MeetRule rule;  // called as rule(manifold of a, manifold of b, at)
+};
+
+/// The table of rules (Meets.cpp): one row per pair of families that meet, either order.
+const std::vector<MeetEntry>& meetRules();
+/// Adds a row for a family defined outside the library (or a test's). Not thread-safe: add
+/// rows before planning starts.
+void addMeetRule(const MeetEntry& entry);
+
+/// Whether a and b meet by the table's rule for their families, and where (`at`); false if
+/// they do not or no rule covers the pair.
+bool meet(const Manifold& a, const Manifold& b, Config& at);
+/// The same, returning the meeting point.
+std::optional<Config> meetingPoint(const Manifold& a, const Manifold& b);
+
+}  // namespace mms

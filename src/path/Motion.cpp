@@ -1,0 +1,82 @@
+#include "path/Motion.h"
+
+#include <set>
+
+#include "check/PathChecker.h"
+#include "mms/Termination.h"
+
+namespace mms {
+
+std::optional<std::vector<Config>> graphPathMotion(const Roadmap& roadmap,
+                                                   const std::vector<size_t>& nodes,
+                                                   const Config& start, const Config& goal) {
+  std::vector<Config> w{start};
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const Manifold& here = roadmap.manifold(roadmap.graph().node(nodes[i]).manifold);
+    Config exit = goal;
+    if (i + 1 < nodes.size()) {
+      auto at = meetingPoint(here, roadmap.manifold(roadmap.graph().node(nodes[i + 1]).manifold));
+      if (!at) return std::nullopt;
+      exit = std::move(*at);
+    }
+    auto moved = here.motion(roadmap.cellOf(nodes[i]), w.back(), exit);
+    if (!moved) return std::nullopt;
+    for (Config& q : *moved) w.push_back(std::move(q));
+  }
+  return w;
+}
+
+namespace {
+// Robots whose configuration changes between waypoints i and j (inclusive stretch).
+size_t movingRobots(const std::vector<Config>& w, size_t i, size_t j) {
+  size_t count = 0;
+  for (size_t r = 0; 3 * r < w[i].size(); ++r) {
+    bool moves = false;
+    for (size_t k = i + 1; k <= j && !moves; ++k)
+      for (size_t c = 3 * r; c < 3 * r + 3; ++c) moves |= w[k][c] != w[i][c];
+    count += moves;
+  }
+  return count;
+}
+}  // namespace
+
+void shortcutPath(const Scene& scene, const CollisionChecker& checker, Random& rng, size_t attempts,
+                  std::vector<Config>& w, bool oneRobotAtATime) {
+  PathCheckSettings quick;
+  quick.maxEvaluations = 20000;
+  // A short path offers few pairs, so attempts repeat them: a refused straight motion stays
+  // refused (the check is deterministic), and is not checked again. Same result, less work.
+  std::set<std::pair<Config, Config>> refused;
+  for (size_t attempt = 0; attempt < attempts && w.size() > 2; ++attempt) {
+    size_t i = rng.below(w.size()), j = rng.below(w.size());
+    if (i > j) std::swap(i, j);
+    if (j < i + 2) continue;
+    if (oneRobotAtATime && movingRobots(w, i, j) > 1) continue;
+    if (refused.count({w[i], w[j]})) continue;
+    if (checkMotion(scene, checker, {w[i], w[j]}, quick).ok)
+      w.erase(w.begin() + i + 1, w.begin() + j);
+    else
+      refused.insert({w[i], w[j]});
+  }
+}
+
+CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& checker,
+                                const Roadmap& roadmap, const std::vector<size_t>& nodes,
+                                Random& rng, const ShortcutSettings& shortcuts) {
+  CertifiedMotion m;
+  Stopwatch build;
+  auto w = graphPathMotion(roadmap, nodes, startConfig(scene), goalConfig(scene));
+  m.buildSeconds = build.seconds();
+  if (!w) return m;
+  Stopwatch shortcut;
+  shortcutPath(scene, checker, rng, shortcuts.attempts, *w, shortcuts.oneRobotAtATime);
+  m.shortcutSeconds = shortcut.seconds();
+  Stopwatch certify;
+  m.certificate = checkPath(scene, checker, *w);
+  m.certifySeconds = certify.seconds();
+  m.ok = m.certificate.ok;
+  m.waypoints = std::move(*w);
+  return m;
+}
+
+}  // namespace mms
