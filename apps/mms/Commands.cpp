@@ -110,6 +110,8 @@ int scenario(const ScenarioArgs& a) {
     s = assemblyTwoScene(a.slack, a.mPartsOnly);
   else if (a.name == "random")
     s = randomScene({a.seed, a.robots, a.obstacles});
+  else if (a.name == "carry-turn")
+    s = carryTurnScene(a.seed);
   else
     s = randomPolygonsTwoRobots(a.seed);
   // The generators must produce valid scenes: validate before writing.

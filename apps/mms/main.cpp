@@ -158,21 +158,23 @@ int main(int argc, char** argv) {
   auto* scenarioCmd = app.add_subcommand(
       "scenario",
       "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
-      "random-polygons (--seed), assembly-1 and assembly-2 (--slack), or a random test scene "
-      "(random: --seed, --robots, --obstacles)");
+      "random-polygons (--seed), assembly-1 and assembly-2 (--slack), a random test scene "
+      "(random: --seed, --robots, --obstacles), or carry-turn (--seed: a gripper and the part it "
+      "holds turn together in a tight chamber)");
   scenarioCmd
       ->add_option("NAME", sa.name,
-                   "pacman, viking-helmet, random-polygons, assembly-1, assembly-2 or random")
+                   "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random or "
+                   "carry-turn")
       ->required()
-      ->check(CLI::IsMember(
-          {"pacman", "viking-helmet", "random-polygons", "assembly-1", "assembly-2", "random"}));
+      ->check(CLI::IsMember({"pacman", "viking-helmet", "random-polygons", "assembly-1",
+                             "assembly-2", "random", "carry-turn"}));
   outputOption(scenarioCmd, sa.output, "Scene file to write");
   scenarioCmd
       ->add_option("--tightness", sa.tightness,
                    "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.999));
-  seedOption(scenarioCmd, sa.seed, "random-polygons, random: the seed of the geometry");
+  seedOption(scenarioCmd, sa.seed, "random-polygons, random, carry-turn: the seed of the geometry");
   scenarioCmd->add_option("--robots", sa.robots, "random: 1 or 2 robots (default: from the seed)")
       ->check(CLI::Range(1, 2));
   scenarioCmd

@@ -1,5 +1,6 @@
 #include "scenarios/Generators.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -43,6 +44,97 @@ Scene randomPolygonsScene(const RandomPolygonsSettings& s) {
     robot.goal = {goals[i].x, goals[i].y, rng.uniform(-M_PI, M_PI)};
     scene.robots.push_back(robot);
   }
+  return scene;
+}
+
+namespace {
+Ring counterClockwise(Ring r) {
+  double a = 0;
+  for (size_t i = 0; i < r.size(); ++i) {
+    const Vec2 p = r[i], q = r[(i + 1) % r.size()];
+    a += p.x * q.y - q.x * p.y;
+  }
+  if (a < 0) std::reverse(r.begin(), r.end());
+  return r;
+}
+Vec2 turned(Vec2 p, double a) {
+  return {p.x * std::cos(a) - p.y * std::sin(a), p.x * std::sin(a) + p.y * std::cos(a)};
+}
+}  // namespace
+
+Scene carryTurnScene(uint64_t seed) {
+  Random rng(seed);
+  const double w = rng.uniform(0.8, 1.2), h = w * rng.uniform(0.7, 1.3);  // the part
+  const double play = rng.uniform(0.04, 0.1) * std::max(w, h);
+  const double wall = rng.uniform(0.2, 0.35) * std::max(w, h);  // the gripper's walls
+  // The pair in the gripper's frame, centred on its bounding box: back wall at the left, the
+  // pocket open to the right, the part in the pocket with the play all round.
+  const double length = wall + w + play, height = h + 2 * play + 2 * wall;
+  const double x0 = -length / 2, x1 = length / 2, y0 = -height / 2, y1 = height / 2;
+  const double inner = h / 2 + play, back = x0 + wall;
+  const Ring gripper{{x0, y0},      {x1, y0},    {x1, -inner}, {back, -inner},
+                     {back, inner}, {x1, inner}, {x1, y1},     {x0, y1}};
+  const Ring part{{-w / 2, -h / 2}, {w / 2, -h / 2}, {w / 2, h / 2}, {-w / 2, h / 2}};
+  const double partOffset = back + play / 2 + w / 2;  // the part's centre in the gripper frame
+  // The chamber: a polygonal circle whose inscribed circle clears the pair's circumscribed one
+  // by 2-8 %. The corridor: the pair's height plus 5-15 %, 1.5-3 pair lengths long.
+  const int arcSides = 96;
+  const double circum = std::hypot(length / 2, height / 2);
+  const double chamber = circum * rng.uniform(1.02, 1.08) / std::cos(M_PI / arcSides);
+  const double corridor = height * rng.uniform(1.05, 1.15);
+  const double run = length * rng.uniform(1.5, 3.0);
+  const double mouth = std::sqrt(chamber * chamber - corridor * corridor / 4);
+  const double left = -(mouth + run), margin = 0.5 * height, top = chamber + margin;
+  // Upper wall (corridor's upper side, the chamber's upper half, half the dead end's cap);
+  // the lower wall is its mirror image.
+  Ring upper{{left, 0}, {left, corridor / 2}};
+  const double from = M_PI - std::asin(corridor / 2 / chamber);
+  const int steps = int(std::ceil(from / (2 * M_PI / arcSides)));
+  for (int i = 0; i <= steps; ++i) {
+    const double a = from * (1 - double(i) / steps);
+    upper.push_back({chamber * std::cos(a), chamber * std::sin(a)});
+  }
+  upper.push_back({chamber + margin, 0});
+  upper.push_back({chamber + margin, top});
+  upper.push_back({left - margin, top});
+  upper.push_back({left - margin, 0});
+  Ring lower;
+  for (auto it = upper.rbegin(); it != upper.rend(); ++it) lower.push_back({it->x, -it->y});
+  // A quarter turn of the whole scene, and the direction of the pair's turn.
+  const double frame = M_PI / 2 * double(rng.below(4));
+  const double turn = rng.uniform() < 0.5 ? M_PI : -M_PI;
+  Scene scene;
+  scene.name = "carry-turn-" + std::to_string(seed);
+  Box box{left - margin, -top, chamber + margin, top};
+  Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  for (const Vec2 c : {Vec2{box.xmin, box.ymin}, Vec2{box.xmax, box.ymax}}) {
+    const Vec2 t = turned(c, frame);
+    lo = {std::min(lo.x, t.x), std::min(lo.y, t.y)};
+    hi = {std::max(hi.x, t.x), std::max(hi.y, t.y)};
+  }
+  scene.bounds = {lo.x, lo.y, hi.x, hi.y};
+  for (const Ring& r : {upper, lower}) {
+    Ring t;
+    for (const Vec2 p : r) t.push_back(turned(p, frame));
+    scene.obstacles.push_back(counterClockwise(t));
+  }
+  // The pair in the corridor, opening towards the chamber; at the goal, turned half round.
+  const double along = rng.uniform(left + length / 2 + 0.1 * run, -mouth - length / 2 - 0.1 * run);
+  const Vec2 centre = turned({along, 0}, frame);
+  auto pose = [&](double theta, double offset) {
+    const Vec2 p = centre + turned({offset, 0}, theta);
+    return Pose{p.x, p.y, std::remainder(theta, 2 * M_PI)};
+  };
+  Robot g, p;
+  g.name = "gripper";
+  g.shape = counterClockwise(gripper);
+  g.start = pose(frame, 0);
+  g.goal = pose(frame + turn, 0);
+  p.name = "part";
+  p.shape = part;
+  p.start = pose(frame, partOffset);
+  p.goal = pose(frame + turn, partOffset);
+  scene.robots = {g, p};
   return scene;
 }
 
