@@ -56,6 +56,7 @@ PlanStatistics statisticsOf(const TwoRobotStats& s) {
                                      {"fixings_1", s.fixings[1]},
                                      {"expanded_fixings", s.expandedFixings},
                                      {"narrow_arc_slices", s.manifolds.localSlices},
+                                     {"compound_lines", s.compoundLines},
                                      {"cross_edges", s.crossEdges},
                                      {"path_subspaces", s.pathSubspaces}});
   p.phases.insert(p.phases.begin() + 4, {"cross", s.crossSeconds});  // after connect
@@ -82,7 +83,7 @@ std::function<void(const Stats&)> progressOf(const Planner::Progress& progress) 
 }
 
 // The declared parameters, in the order --help shows them.
-enum Param { kThreads, kNTheta, kNLines, kNFixings, kExpandShare };
+enum Param { kThreads, kNTheta, kNLines, kNFixings, kExpandShare, kCoupled };
 
 std::vector<ParamSpec> mmsParams() {
   const MmsSettings one;
@@ -111,6 +112,11 @@ std::vector<ParamSpec> mmsParams() {
        "Two robots: share of fixings drawn from free-space cells already reached from the start "
        "or goal; the rest are uniform (default " +
            formatNumber(two.expandShare) + ")"},
+      {"coupled", Type::Integer, 0, 1, two.coupled ? 1.0 : 0.0,
+       "Two robots: 1 builds compound slices and lines in which the pair keeps its start "
+       "relative pose and moves as one rigid body (carry and turn together), when start and goal "
+       "share it; 0 does not (default " +
+           formatNumber(two.coupled ? 1.0 : 0.0) + ")"},
   };
 }
 
@@ -180,6 +186,7 @@ Settings settingsFrom(const PlannerParams& params, const std::vector<ParamSpec>&
   if constexpr (std::is_same_v<Settings, TwoRobotSettings>) {
     if (given(kNFixings)) s.nFixings = size_t(paramValue(params, specs[kNFixings]));
     if (given(kExpandShare)) s.expandShare = paramValue(params, specs[kExpandShare]);
+    if (given(kCoupled)) s.coupled = paramValue(params, specs[kCoupled]) != 0;
   }
   return s;
 }
@@ -201,7 +208,8 @@ std::unique_ptr<Planner> makeMms(const Scene& scene, const PlannerParams& params
         std::map<std::string, double>{{"n_theta", double(s.nTheta)},
                                       {"n_lines", double(s.nLines)},
                                       {"n_fixings", double(s.nFixings)},
-                                      {"expand_share", s.expandShare}});
+                                      {"expand_share", s.expandShare},
+                                      {"coupled", s.coupled ? 1.0 : 0.0}});
   }
   throw InputError(source + ": robots: " + std::to_string(scene.robots.size()) +
                    " robots; the mms planner handles scenes with one or two robots");

@@ -68,14 +68,18 @@ double Arc::unwrap(double theta) const {
 }
 
 LineWorld::LineWorld(const Scene& scene, size_t robot, const std::vector<Ring>& extraObstacles)
-    : shape_(scene.robots[robot].shape), obstacles_(scene.obstacles), bounds_(scene.bounds) {
+    : shapes_{scene.robots[robot].shape}, obstacles_(scene.obstacles), bounds_(scene.bounds) {
   obstacles_.insert(obstacles_.end(), extraObstacles.begin(), extraObstacles.end());
 }
 
-std::vector<double> criticalAngles(const LineWorld& world, Vec2 p, LineStats* stats) {
-  std::vector<double> roots;
+LineWorld::LineWorld(std::vector<Ring> shapes, std::vector<Ring> obstacles, const Box& bounds)
+    : shapes_(std::move(shapes)), obstacles_(std::move(obstacles)), bounds_(bounds) {}
+
+namespace {
+// The critical angles of one ring of the robot, appended to `roots`.
+void ringCriticalAngles(const LineWorld& world, const Ring& robot, Vec2 p, LineStats* stats,
+                        std::vector<double>& roots) {
   Solver solver{stats, &roots};
-  const Ring& robot = world.shape();
   const size_t n = robot.size();
   // Margins keep the filters inclusive: an extra candidate only adds a harmless split.
   constexpr double kSlack = 1e-9;
@@ -147,7 +151,12 @@ std::vector<double> criticalAngles(const LineWorld& world, Vec2 p, LineStats* st
   const Box& b = world.bounds();
   const Vec2 corners[4] = {{b.xmin, b.ymin}, {b.xmax, b.ymin}, {b.xmax, b.ymax}, {b.xmin, b.ymax}};
   for (int k = 0; k < 4; ++k) vertexEdge(corners[k], corners[(k + 1) % 4]);
+}
+}  // namespace
 
+std::vector<double> criticalAngles(const LineWorld& world, Vec2 p, LineStats* stats) {
+  std::vector<double> roots;
+  for (const Ring& robot : world.shapes()) ringCriticalAngles(world, robot, p, stats, roots);
   std::sort(roots.begin(), roots.end());
   if (stats) stats->criticalAngles += roots.size();
   return roots;

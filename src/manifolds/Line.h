@@ -38,12 +38,15 @@ struct LineStats {
 class LineWorld {
  public:
   LineWorld(const Scene& scene, size_t robot, const std::vector<Ring>& extraObstacles = {});
-  const Ring& shape() const { return shape_; }
+  /// A rigid compound turning about the origin of its frame: `shapes` in that frame (two
+  /// robots in a fixed relative pose turn as one).
+  LineWorld(std::vector<Ring> shapes, std::vector<Ring> obstacles, const Box& bounds);
+  const std::vector<Ring>& shapes() const { return shapes_; }
   const std::vector<Ring>& obstacles() const { return obstacles_; }
   const Box& bounds() const { return bounds_; }
 
  private:
-  Ring shape_;
+  std::vector<Ring> shapes_;
   std::vector<Ring> obstacles_;
   Box bounds_;
 };

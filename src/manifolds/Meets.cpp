@@ -1,5 +1,6 @@
 // The meeting table: which families' manifolds meet, and by which rule. Adding a family adds
 // its rows here.
+#include "manifolds/Compound.h"
 #include "manifolds/Manifold.h"
 #include "manifolds/OneRobot.h"
 
@@ -11,6 +12,11 @@ std::vector<MeetEntry>& table() {
       {&SliceManifold::kFamily, &LineManifold::kFamily, meetOneRobot},
       {&SliceManifold::kFamily, &SliceManifold::kFamily, meetOneRobot},
       {&LineManifold::kFamily, &LineManifold::kFamily, meetOneRobot},
+      {&CompoundSliceManifold::kFamily, &CompoundLineManifold::kFamily, meetCompound},
+      {&CompoundSliceManifold::kFamily, &SliceManifold::kFamily, meetCompoundOneRobot},
+      {&CompoundSliceManifold::kFamily, &LineManifold::kFamily, meetCompoundOneRobot},
+      {&CompoundLineManifold::kFamily, &SliceManifold::kFamily, meetCompoundOneRobot},
+      {&CompoundLineManifold::kFamily, &LineManifold::kFamily, meetCompoundOneRobot},
   };
   return rules;
 }

@@ -313,6 +313,40 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
   index(strategy);
 }
 
+Slice::Slice(const Slice& carrier, const Slice& attached, Vec2 offset, PointLocation strategy)
+    : impl_(std::make_shared<Impl>()), angle_(carrier.angle_), theta_(carrier.theta_) {
+  const Impl& c = *carrier.impl_;
+  impl_->neg = c.neg;
+  impl_->negConvex = c.negConvex;
+  impl_->negBox = c.negBox;
+  impl_->regionBox = c.regionBox;
+  if (c.cells.empty() || attached.impl_->cells.empty()) return;
+  checkpoint();
+  const auto [cs, sn] = angle_.cosSin();
+  const FT ox(offset.x), oy(offset.y);
+  const auto dx = CGAL::exact(-(cs * ox - sn * oy)), dy = CGAL::exact(-(sn * ox + cs * oy));
+  auto move = [&](const Polygon& poly) {
+    Polygon out;
+    for (const Point& v : poly.vertices())
+      out.push_back(Point(FT(CGAL::exact(v.x()) + dx), FT(CGAL::exact(v.y()) + dy)));
+    return out;
+  };
+  std::vector<PolygonWithHoles> faces;
+  attached.impl_->free.polygons_with_holes(std::back_inserter(faces));
+  std::vector<PolygonWithHoles> movedFaces;
+  for (const PolygonWithHoles& f : faces) {
+    PolygonWithHoles m(move(f.outer_boundary()));
+    for (auto h = f.holes_begin(); h != f.holes_end(); ++h) m.add_hole(move(*h));
+    movedFaces.push_back(std::move(m));
+  }
+  // An aggregated join: faces of a polygon set may touch at vertices, which insert() forbids.
+  PolygonSet moved;
+  moved.join(movedFaces.begin(), movedFaces.end());
+  impl_->free = c.free;
+  impl_->free.intersection(moved);
+  index(strategy);
+}
+
 Slice::~Slice() = default;
 Slice::Slice(Slice&&) noexcept = default;
 Slice& Slice::operator=(Slice&&) noexcept = default;

@@ -59,6 +59,13 @@ class Slice {
   /// new obstacles cannot reach it. Overlays of one base may be built from several threads.
   Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
         PointLocation strategy = PointLocation::Auto);
+  /// A compound of two robots in a fixed relative pose translating as one: where the first
+  /// robot's reference point may be so that it is free in `carrier` (its slice) and the second,
+  /// at `offset` in the first's frame, is free in `attached` (its slice, at its own angle).
+  /// The free space of `carrier` intersected with that of `attached` moved by -R(angle) offset,
+  /// exactly (the carrier's rational rotation).
+  Slice(const Slice& carrier, const Slice& attached, Vec2 offset,
+        PointLocation strategy = PointLocation::Auto);
   ~Slice();
   Slice(Slice&&) noexcept;
   Slice& operator=(Slice&&) noexcept;

@@ -76,10 +76,55 @@ void TwoRobotPlanner::addAngles(size_t robot, const std::vector<double>& thetas,
                 [&](size_t i) -> std::pair<Subspace*, const Slice*> {
                   return {moving[i % moving.size()], &base_[robot][firstAngle + i / moving.size()]};
                 });
+  if (compound_ && robot == compound_->frame().carrier)
+    for (size_t k = firstAngle; k < base_[robot].size() && !stop(); ++k)
+      compound_->addSlice(base_[robot][k], *worlds_[compound_->frame().attached]);
   collectCells(firstNode);
 }
 
 TwoRobotPlanner::~TwoRobotPlanner() = default;
+
+// The pair as one rigid body, when it starts and ends in one relative pose (a part carried in
+// a gripper, a robot pushing another): the compound subspace of that pose, joined to the start
+// and goal arcs at the start and goal configurations themselves. It costs a compound slice per
+// angle of robot 0 and lines like a subspace's; scenes whose pair changes its relative pose
+// build none.
+void TwoRobotPlanner::addCompound(const Termination& stop) {
+  if (!settings_.coupled || translates_[0] || translates_[1]) return;
+  const Robot &a = scene_.robots[0], &b = scene_.robots[1];
+  CompoundFrame f;
+  f.carrier = 0;
+  f.attached = 1;
+  const double c = std::cos(a.start.theta), s = std::sin(a.start.theta);
+  const Vec2 d{b.start.x - a.start.x, b.start.y - a.start.y};
+  f.offset = {c * d.x + s * d.y, -s * d.x + c * d.y};
+  f.dtheta = b.start.theta - a.start.theta;
+  const Pose goal = f.attachedPose(a.goal);
+  const double scale = 1 + std::max(std::abs(b.goal.x), std::abs(b.goal.y));
+  if (std::hypot(goal.x - b.goal.x, goal.y - b.goal.y) > 1e-9 * scale ||
+      std::abs(std::remainder(goal.theta - b.goal.theta, 2 * M_PI)) > 1e-9)
+    return;
+  compound_ = std::make_unique<CompoundSubspace>(1u << 30, contactScene_, checker_, f, roadmap_,
+                                                 stats_.manifolds);
+  for (const Slice& base : base_[0]) compound_->addSlice(base, *worlds_[1]);
+  const uint32_t startLine = compound_->addLine({a.start.x, a.start.y});
+  const uint32_t goalLine = compound_->addLine({a.goal.x, a.goal.y});
+  stats_.compoundLines += 2;
+  roadmap_.join(startLine, roadmap_.graph().node(size_t(from_)).manifold);
+  roadmap_.join(goalLine, roadmap_.graph().node(size_t(to_)).manifold);
+  addCompoundLines(settings_.nLines, stop);
+}
+
+// Half the compound's lines in its slices' cells drawn uniformly among the cells (the compound
+// turns where its cells are small: a chamber just larger than the pair), half as a subspace's.
+void TwoRobotPlanner::addCompoundLines(size_t count, const Termination& stop) {
+  for (size_t i = 0; i < count && !stop(); ++i) {
+    std::optional<Vec2> p;
+    if (rng_.uniform() < 0.5) p = compound_->pointInCell(rng_);
+    compound_->addLine(p ? *p : linePoint(compound_->frame().carrier));
+    ++stats_.compoundLines;
+  }
+}
 
 // Overlays (a base slice minus the held robot) for `count` (subspace, base) pairs, built
 // settings_.threads at a time and added in index order, so the roadmap does not depend on the
@@ -248,6 +293,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
   if (from < 0 || to < 0) return finish(result, PlanStatus::NotFound);
   from_ = from;
   to_ = to;
+  addCompound(stop);
   sliceNarrowArcsIfDisconnected();
 
   size_t target = settings_.nFixings;
@@ -290,6 +336,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
         sequenceAngles_[r] *= 2;
         addAngles(r, thetas, stop);
       }
+    if (compound_) addCompoundLines(compound_->lineCount(), stop);
     return true;
   };
   RoundsOutcome o = runRounds(h, roadmap_.graph(), size_t(from), size_t(to), stop, stats_);

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "check/PathChecker.h"
+#include "planner/CompoundSubspace.h"
 #include "planner/FixingSamplers.h"
 #include "planner/MmsPlanner.h"
 #include "planner/Subspace.h"
@@ -53,6 +54,10 @@ struct TwoRobotSettings {
   // Slices at the middles of narrow free arcs of a subspace's lines that no shared angle meets
   // (local to the subspace), at most this many per subspace.
   size_t narrowSlices = 8;
+  // When start and goal share the robots' relative pose, a compound subspace in which the pair
+  // keeps it and moves as one rigid body (CompoundSubspace.h): a gripper turning with the part
+  // it holds needs many alternating small moves of one robot at a time otherwise.
+  bool coupled = true;
   size_t shortcutAttempts = 300;
   // Give up after this many rounds (0: only the time limit stops it). A budget in rounds,
   // unlike one in seconds, gives the same answer for the same seed on any machine.
@@ -64,6 +69,7 @@ struct TwoRobotSettings {
 struct TwoRobotStats {
   size_t rounds = 0, subspaces = 0, crossEdges = 0, graphNodes = 0, graphEdges = 0;
   size_t expandedFixings = 0;  // fixings drawn from cells reached from start or goal
+  size_t compoundLines = 0;    // lines of the compound subspace (its slices count as slices)
   size_t pathCells = 0, rejectedPaths = 0;
   size_t pathManifolds = 0, pathSubspaces = 0;  // of those built: slices + lines, subspaces
   std::array<size_t, 2> fixings{0, 0};
@@ -122,6 +128,8 @@ class TwoRobotPlanner : private FixingHost {
   void sliceNarrowArcsNow();
   size_t angleCount(size_t robot) const;
   void addAngles(size_t robot, const std::vector<double>& thetas, const Termination& stop);
+  void addCompound(const Termination& stop);
+  void addCompoundLines(size_t count, const Termination& stop);
   TwoRobotResult finish(TwoRobotResult r, PlanStatus status);
 
   Scene scene_;
@@ -139,6 +147,7 @@ class TwoRobotPlanner : private FixingHost {
   std::vector<Fixing> fixings_;  // fixings_[i] is held in subspaces_[i]
   std::vector<std::unique_ptr<Subspace>> subspaces_;
   std::vector<size_t> narrowPending_;  // subspaces whose narrow-arc slices are not built yet
+  std::unique_ptr<CompoundSubspace> compound_;  // the pair as one body, or none
   Roadmap roadmap_;
   std::array<std::vector<size_t>, 2> cells_;    // per robot: slice-cell nodes where it moves
   std::array<std::vector<size_t>, 2> reached_;  // those connected to the start or goal

@@ -1,0 +1,99 @@
+#pragma once
+// Coupled motion: two robots in a fixed relative pose move as one rigid compound (a gripper
+// turning with the part it holds, a robot pushing another). Slices and lines of one robot with
+// the other held still cannot contain such a motion; it needs many alternating small moves.
+// A compound slice fixes the carrier's angle (both translate together; exact: the carrier's
+// free space intersected with the attached robot's, moved, Slice.h); a compound line fixes the
+// carrier's position (both turn about it; critical angles of the two shapes as one, Line.h).
+// Each is exact and meets the one-robot families where a held robot stands where the compound
+// puts it, so completeness and certification are untouched (the paper's argument applies to
+// any family of manifolds whose cells are exact).
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "manifolds/Line.h"
+#include "manifolds/Manifold.h"
+#include "manifolds/OneRobot.h"
+#include "manifolds/Slice.h"
+
+namespace mms {
+
+/// Which robot carries which, and in what relative pose.
+struct CompoundFrame {
+  uint32_t id = 0;
+  size_t robots = 2;
+  size_t carrier = 0, attached = 1;
+  Vec2 offset;        // the attached robot's reference point in the carrier's frame
+  double dtheta = 0;  // the attached robot's angle minus the carrier's
+  Pose attachedPose(const Pose& carrier) const;
+  /// The carrier's pose that puts the attached robot at `attached`.
+  Pose carrierFor(const Pose& attached) const;
+  Config config(const Pose& carrier) const;
+};
+
+/// The rigid compound's shapes in the carrier's frame (for compound lines).
+std::vector<Ring> compoundShapes(const Scene& scene, const CompoundFrame& frame);
+
+class CompoundManifold : public Manifold {
+ public:
+  explicit CompoundManifold(const CompoundFrame& frame) : frame_(&frame) {}
+  const CompoundFrame& frame() const { return *frame_; }
+  /// The carrier's coordinates this manifold fixes (OneRobotManifold's bits) and their values.
+  virtual unsigned fixes() const = 0;
+  virtual Pose fixedAt() const = 0;
+
+ private:
+  const CompoundFrame* frame_;
+};
+
+template <class Item>
+class StoredCompound : public CompoundManifold {
+ public:
+  StoredCompound(const CompoundFrame& frame, const std::vector<Item>& store, size_t index)
+      : CompoundManifold(frame), store_(&store), index_(index) {}
+  const Item& item() const { return (*store_)[index_]; }
+
+ private:
+  const std::vector<Item>* store_;
+  size_t index_;
+};
+
+class CompoundSliceManifold final : public StoredCompound<Slice> {
+ public:
+  static const ManifoldFamily kFamily;
+  using StoredCompound::StoredCompound;
+  const ManifoldFamily& family() const override { return kFamily; }
+  size_t cellCount() const override { return item().fscCount(); }
+  long locate(const Config& q) const override;
+  /// Both robots translate along a route through the cell (the attached one alongside).
+  std::optional<std::vector<Config>> motion(size_t cell, const Config& from,
+                                            const Config& to) const override;
+  unsigned fixes() const override { return OneRobotManifold::kTheta; }
+  Pose fixedAt() const override { return {0, 0, item().theta()}; }
+};
+
+class CompoundLineManifold final : public StoredCompound<Line> {
+ public:
+  static const ManifoldFamily kFamily;
+  using StoredCompound::StoredCompound;
+  const ManifoldFamily& family() const override { return kFamily; }
+  size_t cellCount() const override { return item().arcs().size(); }
+  long locate(const Config& q) const override;
+  /// Both turn about the carrier's reference point, in steps of at most kStep radians: the
+  /// attached robot's straight moves between them stray from its circle by at most
+  /// |offset| kStep^2 / 8 (1.3e-5 |offset|), far inside the play of any cell worth certifying.
+  std::optional<std::vector<Config>> motion(size_t cell, const Config& from,
+                                            const Config& to) const override;
+  unsigned fixes() const override { return OneRobotManifold::kX | OneRobotManifold::kY; }
+  Pose fixedAt() const override { return {item().point().x, item().point().y, 0}; }
+  static constexpr double kStep = 0.01;
+};
+
+/// Rules: two compound manifolds of one frame meet as a slice and a line of one robot do; a
+/// compound manifold and a one-robot manifold (the other robot held) meet where the held robot
+/// stands where the compound would put it.
+bool meetCompound(const Manifold& a, const Manifold& b, Config& at);
+bool meetCompoundOneRobot(const Manifold& compound, const Manifold& oneRobot, Config& at);
+
+}  // namespace mms

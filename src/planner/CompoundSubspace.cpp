@@ -1,0 +1,70 @@
+#include "planner/CompoundSubspace.h"
+
+#include "manifolds/CellSampling.h"
+#include "mms/Termination.h"
+
+namespace mms {
+
+CompoundSubspace::CompoundSubspace(uint32_t group, const Scene& scene,
+                                   const CollisionChecker& checker, const CompoundFrame& frame,
+                                   Roadmap& roadmap, SubspaceStats& stats)
+    : group_(group),
+      frame_(frame),
+      checker_(checker),
+      lineWorld_(compoundShapes(scene, frame), scene.obstacles, scene.bounds),
+      roadmap_(roadmap),
+      stats_(stats) {}
+
+bool CompoundSubspace::free(const Pose& q) const {
+  const Pose a = frame_.attachedPose(q);
+  return checker_.robotFree(frame_.carrier, q) && checker_.robotFree(frame_.attached, a) &&
+         checker_.robotsDisjoint(frame_.carrier, q, frame_.attached, a);
+}
+
+void CompoundSubspace::addSlice(const Slice& carrierBase, const SliceWorld& attachedWorld) {
+  Stopwatch watch;
+  const Slice attached(attachedWorld,
+                       exact::rationalAngleNear(carrierBase.theta() + frame_.dtheta, 30));
+  slices_.emplace_back(carrierBase, attached, frame_.offset);
+  stats_.sliceSeconds += watch.seconds();
+  const size_t k = slices_.size() - 1;
+  sliceIds_.push_back(roadmap_.add(std::make_unique<CompoundSliceManifold>(frame_, slices_, k),
+                                   group_, uint32_t(k)));
+  ++stats_.slices;
+  stats_.sliceCells += slices_[k].fscCount();
+  Stopwatch connect;
+  for (const uint32_t line : lineIds_) roadmap_.join(line, sliceIds_.back());
+  stats_.connectSeconds += connect.seconds();
+}
+
+uint32_t CompoundSubspace::addLine(Vec2 p) {
+  Stopwatch watch;
+  lines_.emplace_back(
+      lineWorld_, [this](const Pose& q) { return free(q); }, p, &stats_.lineStats);
+  stats_.lineSeconds += watch.seconds();
+  const size_t l = lines_.size() - 1;
+  const uint32_t id =
+      roadmap_.add(std::make_unique<CompoundLineManifold>(frame_, lines_, l), group_, uint32_t(l));
+  lineIds_.push_back(id);
+  ++stats_.lines;
+  stats_.lineArcs += lines_[l].arcs().size();
+  Stopwatch connect;
+  if (!lines_[l].arcs().empty())
+    for (const uint32_t slice : sliceIds_) roadmap_.join(id, slice);
+  stats_.connectSeconds += connect.seconds();
+  return id;
+}
+
+std::optional<Vec2> CompoundSubspace::pointInCell(Random& rng) const {
+  size_t cells = 0;
+  for (const Slice& s : slices_) cells += s.fscCount();
+  if (cells == 0) return std::nullopt;
+  size_t pick = rng.below(cells);
+  for (const Slice& s : slices_) {
+    if (pick < s.fscCount()) return samplePointInCell(s, pick, rng, 16);
+    pick -= s.fscCount();
+  }
+  return std::nullopt;
+}
+
+}  // namespace mms
