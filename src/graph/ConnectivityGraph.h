@@ -2,7 +2,6 @@
 // The connectivity graph of MMS: one node per free-space cell, one edge per pair of cells
 // (of manifolds of different families) that intersect. Boost Graph Library underneath. It
 // knows cells by number only: Roadmap maps them to manifolds.
-#include <boost/graph/adjacency_list.hpp>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -20,8 +19,8 @@ class ConnectivityGraph {
   void addEdge(size_t a, size_t b);
   const Node& node(size_t v) const { return nodes_[v]; }
   size_t nodeCount() const { return nodes_.size(); }
-  size_t edgeCount() const { return boost::num_edges(g_); }
-  size_t degree(size_t v) const { return boost::out_degree(v, g_); }
+  size_t edgeCount() const { return edges_; }
+  size_t degree(size_t v) const { return adjacency_[v].size(); }
 
   /// Whether a and b are connected (incremental union-find, kept as edges are added).
   bool connected(size_t a, size_t b) const;
@@ -30,8 +29,11 @@ class ConnectivityGraph {
   std::optional<std::vector<size_t>> path(size_t from, size_t to) const;
 
  private:
-  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
-  Graph g_;
+  // Each node's neighbours as 32-bit indices, both ways (Boost's vector-as-graph adaptor):
+  // 8 bytes an edge, where adjacency_list's undirected edge list took about 80. The roadmap's
+  // edges grow with lines times slices, so this is most of its memory.
+  std::vector<std::vector<uint32_t>> adjacency_;
+  size_t edges_ = 0;
   std::vector<Node> nodes_;
   // boost::disjoint_sets storage; mutable because find_set compresses paths.
   mutable std::vector<size_t> rank_, parent_;

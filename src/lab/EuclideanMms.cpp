@@ -1,5 +1,6 @@
 #include "lab/EuclideanMms.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
