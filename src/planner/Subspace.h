@@ -68,6 +68,8 @@ class Subspace {
   void addLocalOverlay(Slice slice);
   /// Adds a line at p, connecting it to the slices already here. Returns its index.
   size_t addLine(Vec2 p);
+  /// The roadmap id of line l.
+  uint32_t lineId(size_t l) const { return lineIds_[l]; }
 
   /// Graph node of the cell of slice k containing p, or -1 (also when slice k was never built).
   /// `knownFree`: the collision checker found p free here, so a slice of one cell needs no

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <utility>
 
+#include "geometry/PolygonOps.h"
 #include "path/Motion.h"
 #include "planner/Rounds.h"
 #include "util/Parallel.h"
@@ -76,52 +78,83 @@ void TwoRobotPlanner::addAngles(size_t robot, const std::vector<double>& thetas,
                 [&](size_t i) -> std::pair<Subspace*, const Slice*> {
                   return {moving[i % moving.size()], &base_[robot][firstAngle + i / moving.size()]};
                 });
-  if (compound_ && robot == compound_->frame().carrier)
-    for (size_t k = firstAngle; k < base_[robot].size() && !stop(); ++k)
-      compound_->addSlice(base_[robot][k], *worlds_[compound_->frame().attached]);
+  for (auto& c : compounds_)
+    if (robot == c->frame().carrier)
+      for (size_t k = firstAngle; k < base_[robot].size() && !stop(); ++k)
+        c->addSlice(base_[robot][k], *worlds_[c->frame().attached]);
   collectCells(firstNode);
 }
 
 TwoRobotPlanner::~TwoRobotPlanner() = default;
 
-// The pair as one rigid body, when it starts and ends in one relative pose (a part carried in
-// a gripper, a robot pushing another): the compound subspace of that pose, joined to the start
-// and goal arcs at the start and goal configurations themselves. It costs a compound slice per
-// angle of robot 0 and lines like a subspace's; scenes whose pair changes its relative pose
-// build none.
-void TwoRobotPlanner::addCompound(const Termination& stop) {
-  if (!settings_.coupled || translates_[0] || translates_[1]) return;
-  const Robot &a = scene_.robots[0], &b = scene_.robots[1];
+namespace {
+// Robot 1's pose relative to robot 0's frame.
+CompoundFrame relativeFrame(const Pose& a, const Pose& b) {
   CompoundFrame f;
   f.carrier = 0;
   f.attached = 1;
-  const double c = std::cos(a.start.theta), s = std::sin(a.start.theta);
-  const Vec2 d{b.start.x - a.start.x, b.start.y - a.start.y};
+  const double c = std::cos(a.theta), s = std::sin(a.theta);
+  const Vec2 d{b.x - a.x, b.y - a.y};
   f.offset = {c * d.x + s * d.y, -s * d.x + c * d.y};
-  f.dtheta = b.start.theta - a.start.theta;
-  const Pose goal = f.attachedPose(a.goal);
-  const double scale = 1 + std::max(std::abs(b.goal.x), std::abs(b.goal.y));
-  if (std::hypot(goal.x - b.goal.x, goal.y - b.goal.y) > 1e-9 * scale ||
-      std::abs(std::remainder(goal.theta - b.goal.theta, 2 * M_PI)) > 1e-9)
+  f.dtheta = std::remainder(b.theta - a.theta, 2 * M_PI);
+  return f;
+}
+bool sameRelativePose(const CompoundFrame& f, const CompoundFrame& g) {
+  return std::hypot(f.offset.x - g.offset.x, f.offset.y - g.offset.y) <=
+             1e-9 * (1 + std::hypot(f.offset.x, f.offset.y)) &&
+         std::abs(std::remainder(f.dtheta - g.dtheta, 2 * M_PI)) <= 1e-9;
+}
+}  // namespace
+
+// A pair that starts and ends close together (a part held in a gripper, a robot pushing
+// another) moves as one rigid body: one compound subspace per relative pose of its start and
+// goal (one if they agree). Each has lines at robot 0's start and goal positions; they meet the
+// start and goal arcs at the start and goal configurations themselves. Where the relative
+// poses differ, robot 1 changes its hold in the subspaces holding robot 0 at its start or goal:
+// a line there at robot 1's position in the other relative pose meets the other compound. Pairs
+// apart at either end build none: they pay nothing.
+void TwoRobotPlanner::addCompound(const Termination& stop) {
+  if (!settings_.coupled || translates_[0] || translates_[1]) return;
+  const Robot &a = scene_.robots[0], &b = scene_.robots[1];
+  const double reach = 0.25 * std::min(radius(a.shape), radius(b.shape));
+  if (checker_.robotsDistance(0, a.start, 1, b.start) > reach ||
+      checker_.robotsDistance(0, a.goal, 1, b.goal) > reach)
     return;
-  compound_ = std::make_unique<CompoundSubspace>(1u << 30, contactScene_, checker_, f, roadmap_,
-                                                 stats_.manifolds);
-  for (const Slice& base : base_[0]) compound_->addSlice(base, *worlds_[1]);
-  const uint32_t startLine = compound_->addLine({a.start.x, a.start.y});
-  const uint32_t goalLine = compound_->addLine({a.goal.x, a.goal.y});
-  stats_.compoundLines += 2;
-  roadmap_.join(startLine, roadmap_.graph().node(size_t(from_)).manifold);
-  roadmap_.join(goalLine, roadmap_.graph().node(size_t(to_)).manifold);
-  addCompoundLines(settings_.nLines, stop);
+  std::vector<CompoundFrame> frames{relativeFrame(a.start, b.start)};
+  if (const CompoundFrame g = relativeFrame(a.goal, b.goal); !sameRelativePose(frames[0], g))
+    frames.push_back(g);
+  for (const CompoundFrame& f : frames) {
+    if (stop()) return;
+    compounds_.push_back(
+        std::make_unique<CompoundSubspace>(uint32_t((1u << 30) + compounds_.size()), contactScene_,
+                                           checker_, f, roadmap_, stats_.manifolds));
+    CompoundSubspace& c = *compounds_.back();
+    for (const Slice& base : base_[0]) c.addSlice(base, *worlds_[1]);
+    // Subspaces 0 and 2 hold robot 0 at its start and goal; 1 and 3 robot 1.
+    for (const auto& [carrier, held, end] :
+         {std::tuple{a.start, size_t(0), from_}, std::tuple{a.goal, size_t(2), to_}}) {
+      const uint32_t line = c.addLine({carrier.x, carrier.y});
+      ++stats_.compoundLines;
+      roadmap_.join(line, roadmap_.graph().node(size_t(end)).manifold);
+      const Pose other = f.attachedPose(carrier);
+      const Pose own = held == 0 ? b.start : b.goal;
+      if (std::hypot(other.x - own.x, other.y - own.y) >
+          1e-9 * (1 + std::abs(own.x) + std::abs(own.y))) {
+        const size_t l = subspaces_[held]->addLine({other.x, other.y});
+        roadmap_.join(subspaces_[held]->lineId(l), line);
+      }
+    }
+    addCompoundLines(c, settings_.nLines, stop);
+  }
 }
 
 // Half the compound's lines in its slices' cells drawn uniformly among the cells (the compound
 // turns where its cells are small: a chamber just larger than the pair), half as a subspace's.
-void TwoRobotPlanner::addCompoundLines(size_t count, const Termination& stop) {
+void TwoRobotPlanner::addCompoundLines(CompoundSubspace& c, size_t count, const Termination& stop) {
   for (size_t i = 0; i < count && !stop(); ++i) {
     std::optional<Vec2> p;
-    if (rng_.uniform() < 0.5) p = compound_->pointInCell(rng_);
-    compound_->addLine(p ? *p : linePoint(compound_->frame().carrier));
+    if (rng_.uniform() < 0.5) p = c.pointInCell(rng_);
+    c.addLine(p ? *p : linePoint(c.frame().carrier));
     ++stats_.compoundLines;
   }
 }
@@ -336,7 +369,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
         sequenceAngles_[r] *= 2;
         addAngles(r, thetas, stop);
       }
-    if (compound_) addCompoundLines(compound_->lineCount(), stop);
+    for (auto& c : compounds_) addCompoundLines(*c, c->lineCount(), stop);
     return true;
   };
   RoundsOutcome o = runRounds(h, roadmap_.graph(), size_t(from), size_t(to), stop, stats_);

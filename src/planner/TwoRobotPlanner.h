@@ -54,9 +54,10 @@ struct TwoRobotSettings {
   // Slices at the middles of narrow free arcs of a subspace's lines that no shared angle meets
   // (local to the subspace), at most this many per subspace.
   size_t narrowSlices = 8;
-  // When start and goal share the robots' relative pose, a compound subspace in which the pair
-  // keeps it and moves as one rigid body (CompoundSubspace.h): a gripper turning with the part
-  // it holds needs many alternating small moves of one robot at a time otherwise.
+  // When the robots are close at start and goal, compound subspaces in which the pair keeps
+  // its start or goal relative pose and moves as one rigid body (CompoundSubspace.h): a
+  // gripper turning with the part it holds needs many alternating small moves of one robot at
+  // a time otherwise.
   bool coupled = true;
   size_t shortcutAttempts = 300;
   // Give up after this many rounds (0: only the time limit stops it). A budget in rounds,
@@ -129,7 +130,7 @@ class TwoRobotPlanner : private FixingHost {
   size_t angleCount(size_t robot) const;
   void addAngles(size_t robot, const std::vector<double>& thetas, const Termination& stop);
   void addCompound(const Termination& stop);
-  void addCompoundLines(size_t count, const Termination& stop);
+  void addCompoundLines(CompoundSubspace& c, size_t count, const Termination& stop);
   TwoRobotResult finish(TwoRobotResult r, PlanStatus status);
 
   Scene scene_;
@@ -147,7 +148,7 @@ class TwoRobotPlanner : private FixingHost {
   std::vector<Fixing> fixings_;  // fixings_[i] is held in subspaces_[i]
   std::vector<std::unique_ptr<Subspace>> subspaces_;
   std::vector<size_t> narrowPending_;  // subspaces whose narrow-arc slices are not built yet
-  std::unique_ptr<CompoundSubspace> compound_;  // the pair as one body, or none
+  std::vector<std::unique_ptr<CompoundSubspace>> compounds_;  // the pair as one body, if close
   Roadmap roadmap_;
   std::array<std::vector<size_t>, 2> cells_;    // per robot: slice-cell nodes where it moves
   std::array<std::vector<size_t>, 2> reached_;  // those connected to the start or goal

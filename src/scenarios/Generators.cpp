@@ -75,7 +75,7 @@ Scene carryTurnScene(uint64_t seed) {
   const Ring gripper{{x0, y0},      {x1, y0},    {x1, -inner}, {back, -inner},
                      {back, inner}, {x1, inner}, {x1, y1},     {x0, y1}};
   const Ring part{{-w / 2, -h / 2}, {w / 2, -h / 2}, {w / 2, h / 2}, {-w / 2, h / 2}};
-  const double partOffset = back + play / 2 + w / 2;  // the part's centre in the gripper frame
+  const double deepest = back + w / 2;  // the part's centre against the pocket's back
   // The chamber: a polygonal circle whose inscribed circle clears the pair's circumscribed one
   // by 2-8 %. The corridor: the pair's height plus 5-15 %, 1.5-3 pair lengths long.
   const int arcSides = 96;
@@ -121,19 +121,25 @@ Scene carryTurnScene(uint64_t seed) {
   // The pair in the corridor, opening towards the chamber; at the goal, turned half round.
   const double along = rng.uniform(left + length / 2 + 0.1 * run, -mouth - length / 2 - 0.1 * run);
   const Vec2 centre = turned({along, 0}, frame);
-  auto pose = [&](double theta, double offset) {
-    const Vec2 p = centre + turned({offset, 0}, theta);
+  auto pose = [&](double theta, Vec2 offset) {
+    const Vec2 p = centre + turned(offset, theta);
     return Pose{p.x, p.y, std::remainder(theta, 2 * M_PI)};
   };
+  // The part anywhere in the pocket's play, at the start and (independently) at the goal: the
+  // gripper may have to regrip.
+  auto inPocket = [&] {
+    return Vec2{deepest + rng.uniform(0.15, 0.85) * play, rng.uniform(-0.85, 0.85) * play};
+  };
+  const Vec2 startHold = inPocket(), goalHold = inPocket();
   Robot g, p;
   g.name = "gripper";
   g.shape = counterClockwise(gripper);
-  g.start = pose(frame, 0);
-  g.goal = pose(frame + turn, 0);
+  g.start = pose(frame, {0, 0});
+  g.goal = pose(frame + turn, {0, 0});
   p.name = "part";
   p.shape = part;
-  p.start = pose(frame, partOffset);
-  p.goal = pose(frame + turn, partOffset);
+  p.start = pose(frame, startHold);
+  p.goal = pose(frame + turn, goalHold);
   scene.robots = {g, p};
   return scene;
 }

@@ -30,7 +30,7 @@ Scene randomPolygonsScene(const RandomPolygonsSettings& settings);
 Scene randomPolygonsTwoRobots(uint64_t seed = 1);
 
 /// Carry and turn: a U-shaped gripper (robot 0) holds a rectangular part (robot 1) in its
-/// pocket, at the end of a dead-end corridor too narrow for either to turn in; a round chamber
+/// pocket (anywhere in its play, at the start and independently at the goal), at the end of a dead-end corridor too narrow for either to turn in; a round chamber
 /// at the corridor's mouth, just larger than the pair's circumscribed circle, is the only
 /// place to turn, and the goal is the pair turned half round, back in the corridor. The part
 /// can pass neither the gripper in the corridor nor wait beside it in the chamber, so the two
