@@ -112,6 +112,8 @@ int scenario(const ScenarioArgs& a) {
     s = randomScene({a.seed, a.robots, a.obstacles});
   else if (a.name == "carry-turn")
     s = carryTurnScene(a.seed);
+  else if (a.name == "niche-swap")
+    s = nicheSwapScene(a.seed);
   else
     s = randomPolygonsTwoRobots(a.seed);
   // The generators must produce valid scenes: validate before writing.

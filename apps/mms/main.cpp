@@ -159,22 +159,24 @@ int main(int argc, char** argv) {
       "scenario",
       "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
       "random-polygons (--seed), assembly-1 and assembly-2 (--slack), a random test scene "
-      "(random: --seed, --robots, --obstacles), or carry-turn (--seed: a gripper and the part it "
-      "holds turn together in a tight chamber)");
+      "(random: --seed, --robots, --obstacles), carry-turn (--seed: a gripper and the part it "
+      "holds turn together in a tight chamber) or niche-swap (--seed: two robots swap the ends "
+      "of a corridor with a niche)");
   scenarioCmd
       ->add_option("NAME", sa.name,
-                   "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random or "
-                   "carry-turn")
+                   "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
+                   "carry-turn or niche-swap")
       ->required()
       ->check(CLI::IsMember({"pacman", "viking-helmet", "random-polygons", "assembly-1",
-                             "assembly-2", "random", "carry-turn"}));
+                             "assembly-2", "random", "carry-turn", "niche-swap"}));
   outputOption(scenarioCmd, sa.output, "Scene file to write");
   scenarioCmd
       ->add_option("--tightness", sa.tightness,
                    "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.999));
-  seedOption(scenarioCmd, sa.seed, "random-polygons, random, carry-turn: the seed of the geometry");
+  seedOption(scenarioCmd, sa.seed,
+             "random-polygons, random, carry-turn, niche-swap: the seed of the geometry");
   scenarioCmd->add_option("--robots", sa.robots, "random: 1 or 2 robots (default: from the seed)")
       ->check(CLI::Range(1, 2));
   scenarioCmd

@@ -228,4 +228,54 @@ Scene vikingHelmetScene() {
   return s;
 }
 
+Scene nicheSwapScene(uint64_t seed) {
+  Random rng(seed);
+  const double size = 1;
+  // Blocky shapes: a vertex near each corner of the size x size box, one more on a random side;
+  // each fits the corridor at angle 0, two side by side do not.
+  auto blocky = [&] {
+    const double h = size / 2, j = 0.15 * size;
+    Ring r{{-h + rng.uniform(0, j), -h + rng.uniform(0, j)},
+           {h - rng.uniform(0, j), -h + rng.uniform(0, j)},
+           {h - rng.uniform(0, j), h - rng.uniform(0, j)},
+           {-h + rng.uniform(0, j), h - rng.uniform(0, j)}};
+    const size_t side = rng.below(4);
+    const Vec2 a = r[side], b = r[(side + 1) % 4], mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
+    const Vec2 inward{-mid.x, -mid.y};  // towards the centre: keeps the ring simple
+    r.insert(r.begin() + long(side) + 1, mid + rng.uniform(0, 0.3) * inward);
+    return r;
+  };
+  const Ring shapeA = blocky(), shapeB = blocky();
+  auto height = [](const Ring& r) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const Vec2 v : r) lo = std::min(lo, v.y), hi = std::max(hi, v.y);
+    return hi - lo;
+  };
+  // Room for either robot, not for both side by side.
+  const double hA = height(shapeA), hB = height(shapeB);
+  const double width = rng.uniform(1.1 * std::max(hA, hB), 0.95 * (hA + hB));
+  const double length = size * rng.uniform(8, 14);
+  const double nicheWidth = size * rng.uniform(1.2, 1.6), depth = size * rng.uniform(1.2, 1.8);
+  const double nicheX = rng.uniform(0.3, 0.7) * length - nicheWidth / 2;
+  const double wall = size;
+  Scene scene;
+  scene.name = "niche-swap-" + std::to_string(seed);
+  scene.bounds = {0, 0, length, width + depth + wall};
+  scene.obstacles = {rect(0, width, nicheX, width + depth + wall),
+                     rect(nicheX + nicheWidth, width, length, width + depth + wall),
+                     rect(nicheX, width + depth, nicheX + nicheWidth, width + depth + wall)};
+  const double y = width / 2, margin = 0.6 * size;
+  Robot a, b;
+  a.name = "left";
+  a.shape = shapeA;
+  a.start = {margin, y, 0};
+  a.goal = {length - margin, y, 0};
+  b.name = "right";
+  b.shape = shapeB;
+  b.start = {length - margin, y, 0};
+  b.goal = {margin, y, 0};
+  scene.robots = {a, b};
+  return scene;
+}
+
 }  // namespace mms

@@ -30,15 +30,23 @@ Scene randomPolygonsScene(const RandomPolygonsSettings& settings);
 Scene randomPolygonsTwoRobots(uint64_t seed = 1);
 
 /// Carry and turn: a U-shaped gripper (robot 0) holds a rectangular part (robot 1) in its
-/// pocket (anywhere in its play, at the start and independently at the goal), at the end of a dead-end corridor too narrow for either to turn in; a round chamber
-/// at the corridor's mouth, just larger than the pair's circumscribed circle, is the only
-/// place to turn, and the goal is the pair turned half round, back in the corridor. The part
-/// can pass neither the gripper in the corridor nor wait beside it in the chamber, so the two
-/// turn together, their angles within the pocket's play of each other. Random per seed: the
-/// part's size and aspect, the play (0.04-0.1 of the part's size), the gripper's walls, the
-/// corridor's length and slack, the chamber's slack, the direction of the corridor (a quarter
-/// turn) and of the turn. The chamber is centred at the origin.
+/// pocket (anywhere in its play, at the start and independently at the goal), at the end of a
+/// dead-end corridor too narrow for either to turn in; a round chamber at the corridor's mouth,
+/// just larger than the pair's circumscribed circle, is the only place to turn, and the goal is the
+/// pair turned half round, back in the corridor. The part can pass neither the gripper in the
+/// corridor nor wait beside it in the chamber, so the two turn together, their angles within the
+/// pocket's play of each other. Random per seed: the part's size and aspect, the play (0.04-0.1 of
+/// the part's size), the gripper's walls, the corridor's length and slack, the chamber's slack, the
+/// direction of the corridor (a quarter turn) and of the turn. The chamber is centred at the
+/// origin.
 Scene carryTurnScene(uint64_t seed);
+
+/// Niche swap: two robots of random blocky shapes swap the ends of a corridor too narrow for
+/// them to pass each other; a niche in one wall, at a random place, is just large enough for one
+/// of them to wait in. Random per seed: the shapes, the corridor's width (room for either robot,
+/// not for both side by side) and length, the niche's place, width and depth. Robot 0 starts at the
+/// left end.
+Scene nicheSwapScene(uint64_t seed);
 
 /// The paper's Pacman scenario: a C-shaped robot and a square swap ends of a corridor too
 /// narrow to pass; the Pacman must swallow the square, turn around it and release it.
