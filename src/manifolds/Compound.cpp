@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "manifolds/CellRoute.h"
-
 namespace mms {
 
 const ManifoldFamily CompoundSliceManifold::kFamily{"compound-slice"};
@@ -52,6 +50,13 @@ Pose CompoundFrame::carrierFor(const Pose& a) const {
   return {p.x, p.y, theta};
 }
 
+Config CompoundFrame::moved(const Config& q, const Pose& c) const {
+  Config out = q;
+  put(out, carrier, c);
+  put(out, attached, attachedPose(c));
+  return out;
+}
+
 Config CompoundFrame::config(const Pose& c) const {
   Config q(3 * robots);
   put(q, carrier, c);
@@ -74,20 +79,12 @@ long CompoundSliceManifold::locate(const Config& q) const {
 std::optional<std::vector<Config>> CompoundSliceManifold::motion(size_t cell, const Config& from,
                                                                  const Config& to) const {
   const size_t c = frame().carrier;
-  const Slice& s = item();
-  const auto route = routeInCell(s.cell(cell), [&](Vec2 p) { return s.locate(p) == long(cell); },
-                                 {from[3 * c], from[3 * c + 1]}, {to[3 * c], to[3 * c + 1]});
+  const auto route =
+      slideInCell(item(), cell, {from[3 * c], from[3 * c + 1]}, {to[3 * c], to[3 * c + 1]});
   if (!route) return std::nullopt;
+  const double theta = from[3 * c + 2];
   std::vector<Config> out;
-  Pose carrier = poseIn(from, c);
-  for (size_t j = 1; j < route->size(); ++j) {
-    carrier.x = (*route)[j].x;
-    carrier.y = (*route)[j].y;
-    Config q = from;
-    put(q, c, carrier);
-    put(q, frame().attached, frame().attachedPose(carrier));
-    out.push_back(std::move(q));
-  }
+  for (const Vec2 p : *route) out.push_back(frame().moved(from, {p.x, p.y, theta}));
   return out;
 }
 
@@ -98,19 +95,14 @@ long CompoundLineManifold::locate(const Config& q) const {
 std::optional<std::vector<Config>> CompoundLineManifold::motion(size_t cell, const Config& from,
                                                                 const Config& to) const {
   const size_t c = frame().carrier;
-  const Arc& arc = item().arcs()[cell];
-  const double theta0 = from[3 * c + 2], target = to[3 * c + 2];
-  const double turn = arc.full() ? std::remainder(target - theta0, 2 * M_PI)
-                                 : arc.unwrap(target) - arc.unwrap(theta0);
+  const double theta0 = from[3 * c + 2];
+  const double turn = item().arcs()[cell].turn(theta0, to[3 * c + 2]);
   const int steps = std::max(1, int(std::ceil(std::abs(turn) / kStep)));
   std::vector<Config> out;
   Pose carrier = poseIn(from, c);
   for (int i = 1; i <= steps; ++i) {
     carrier.theta = theta0 + turn * i / steps;
-    Config q = from;
-    put(q, c, carrier);
-    put(q, frame().attached, frame().attachedPose(carrier));
-    out.push_back(std::move(q));
+    out.push_back(frame().moved(from, carrier));
   }
   return out;
 }

@@ -30,39 +30,20 @@ struct CompoundFrame {
   /// The carrier's pose that puts the attached robot at `attached`.
   Pose carrierFor(const Pose& attached) const;
   Config config(const Pose& carrier) const;
+  /// `q` with the carrier at `carrier` and the attached robot where it puts it.
+  Config moved(const Config& q, const Pose& carrier) const;
 };
 
 /// The rigid compound's shapes in the carrier's frame (for compound lines).
 std::vector<Ring> compoundShapes(const Scene& scene, const CompoundFrame& frame);
 
-class CompoundManifold : public Manifold {
- public:
-  explicit CompoundManifold(const CompoundFrame& frame) : frame_(&frame) {}
-  const CompoundFrame& frame() const { return *frame_; }
-  /// The carrier's coordinates this manifold fixes (OneRobotManifold's bits) and their values.
-  virtual unsigned fixes() const = 0;
-  virtual Pose fixedAt() const = 0;
+/// The carrier's coordinates a compound manifold fixes: as a one-robot manifold's.
+using CompoundManifold = FramedManifold<CompoundFrame>;
 
- private:
-  const CompoundFrame* frame_;
-};
-
-template <class Item>
-class StoredCompound : public CompoundManifold {
- public:
-  StoredCompound(const CompoundFrame& frame, const std::vector<Item>& store, size_t index)
-      : CompoundManifold(frame), store_(&store), index_(index) {}
-  const Item& item() const { return (*store_)[index_]; }
-
- private:
-  const std::vector<Item>* store_;
-  size_t index_;
-};
-
-class CompoundSliceManifold final : public StoredCompound<Slice> {
+class CompoundSliceManifold final : public StoredView<CompoundManifold, Slice> {
  public:
   static const ManifoldFamily kFamily;
-  using StoredCompound::StoredCompound;
+  using StoredView::StoredView;
   const ManifoldFamily& family() const override { return kFamily; }
   size_t cellCount() const override { return item().fscCount(); }
   long locate(const Config& q) const override;
@@ -73,10 +54,10 @@ class CompoundSliceManifold final : public StoredCompound<Slice> {
   Pose fixedAt() const override { return {0, 0, item().theta()}; }
 };
 
-class CompoundLineManifold final : public StoredCompound<Line> {
+class CompoundLineManifold final : public StoredView<CompoundManifold, Line> {
  public:
   static const ManifoldFamily kFamily;
-  using StoredCompound::StoredCompound;
+  using StoredView::StoredView;
   const ManifoldFamily& family() const override { return kFamily; }
   size_t cellCount() const override { return item().arcs().size(); }
   long locate(const Config& q) const override;

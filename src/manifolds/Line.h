@@ -10,6 +10,7 @@
 // decide (a tangency), its sign is decided exactly, so a grazing contact is neither lost nor
 // split. Spurious extra critical angles are harmless: the free status of every interval
 // between consecutive critical angles is decided by the collision checker at its middle.
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -25,6 +26,11 @@ struct Arc {
   bool contains(double theta) const;
   /// The representative of theta (modulo 2 pi) inside [lo, lo + 2 pi).
   double unwrap(double theta) const;
+  /// The signed turn from angle `from` to angle `to` staying inside the arc (on a full circle,
+  /// the short way).
+  double turn(double from, double to) const {
+    return full() ? std::remainder(to - from, 2 * M_PI) : unwrap(to) - unwrap(from);
+  }
 };
 
 struct LineStats {

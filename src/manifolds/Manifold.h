@@ -33,6 +33,37 @@ class Manifold {
                                                     const Config& to) const = 0;
 };
 
+/// A manifold in a frame (which robots move and which are held, or which carries which) that
+/// fixes some coordinates of the robot it moves: which (bits kX | kY | kTheta) and their values
+/// (the other fields 0). Slices fix the angle, lines the position.
+template <class Frame>
+class FramedManifold : public Manifold {
+ public:
+  enum : unsigned { kX = 1, kY = 2, kTheta = 4 };
+  explicit FramedManifold(const Frame& frame) : frame_(&frame) {}
+  const Frame& frame() const { return *frame_; }
+  virtual unsigned fixes() const = 0;
+  virtual Pose fixedAt() const = 0;
+
+ private:
+  const Frame* frame_;
+};
+
+/// A manifold that is a view of item `index` of a vector its planner keeps (the vector may grow;
+/// the index stays): Base is the family's frame-holding base class.
+template <class Base, class Item>
+class StoredView : public Base {
+ public:
+  template <class Frame>
+  StoredView(const Frame& frame, const std::vector<Item>& store, size_t index)
+      : Base(frame), store_(&store), index_(index) {}
+  const Item& item() const { return (*store_)[index_]; }
+
+ private:
+  const std::vector<Item>* store_;
+  size_t index_;
+};
+
 /// A rule for one pair of families: whether two manifolds meet, and where (`at`, a
 /// configuration on both, written in place: joins run once per pair of manifolds, the
 /// roadmap's hottest loop, and allocate nothing). Every family here meets another in at most

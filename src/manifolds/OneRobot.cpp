@@ -20,19 +20,23 @@ long SliceManifold::locate(const Config& q) const {
   return slice().locate({q[3 * m], q[3 * m + 1]});
 }
 
+std::optional<std::vector<Vec2>> slideInCell(const Slice& slice, size_t cell, Vec2 a, Vec2 b) {
+  auto route = routeInCell(
+      slice.cell(cell), [&](Vec2 p) { return slice.locate(p) == long(cell); }, a, b);
+  if (route) route->erase(route->begin());
+  return route;
+}
+
 std::optional<std::vector<Config>> SliceManifold::motion(size_t cell, const Config& from,
                                                          const Config& to) const {
   const size_t m = frame().moving;
-  const Slice& s = slice();
-  const auto route = routeInCell(s.cell(cell), [&](Vec2 p) { return s.locate(p) == long(cell); },
-                                 {from[3 * m], from[3 * m + 1]}, {to[3 * m], to[3 * m + 1]});
+  const auto route =
+      slideInCell(slice(), cell, {from[3 * m], from[3 * m + 1]}, {to[3 * m], to[3 * m + 1]});
   if (!route) return std::nullopt;
-  std::vector<Config> out;
-  Config q = from;
-  for (size_t j = 1; j < route->size(); ++j) {
-    q[3 * m] = (*route)[j].x;
-    q[3 * m + 1] = (*route)[j].y;
-    out.push_back(q);
+  std::vector<Config> out(route->size(), from);
+  for (size_t j = 0; j < route->size(); ++j) {
+    out[j][3 * m] = (*route)[j].x;
+    out[j][3 * m + 1] = (*route)[j].y;
   }
   return out;
 }
@@ -44,12 +48,8 @@ long LineManifold::locate(const Config& q) const {
 std::optional<std::vector<Config>> LineManifold::motion(size_t cell, const Config& from,
                                                         const Config& to) const {
   const size_t m = frame().moving;
-  const Arc& arc = line().arcs()[cell];
   Config q = from;
-  double& theta = q[3 * m + 2];
-  const double target = to[3 * m + 2];
-  theta += arc.full() ? std::remainder(target - theta, 2 * M_PI)
-                      : arc.unwrap(target) - arc.unwrap(theta);
+  q[3 * m + 2] += line().arcs()[cell].turn(from[3 * m + 2], to[3 * m + 2]);
   return std::vector<Config>{q};
 }
 

@@ -23,38 +23,12 @@ struct HeldFrame {
   const Pose* heldPose(size_t robot) const;
 };
 
-class OneRobotManifold : public Manifold {
- public:
-  explicit OneRobotManifold(const HeldFrame& frame) : frame_(&frame) {}
-  const HeldFrame& frame() const { return *frame_; }
-  /// The moving robot's coordinates this manifold fixes (bits kX | kY | kTheta) ...
-  enum : unsigned { kX = 1, kY = 2, kTheta = 4 };
-  virtual unsigned fixes() const = 0;
-  /// ... and their values (the other fields are 0).
-  virtual Pose fixedAt() const = 0;
+using OneRobotManifold = FramedManifold<HeldFrame>;
 
- private:
-  const HeldFrame* frame_;
-};
-
-/// A view of item `index` of a vector its subspace keeps (the vector may grow; the item's
-/// index stays).
-template <class Item>
-class StoredManifold : public OneRobotManifold {
- public:
-  StoredManifold(const HeldFrame& frame, const std::vector<Item>& store, size_t index)
-      : OneRobotManifold(frame), store_(&store), index_(index) {}
-  const Item& item() const { return (*store_)[index_]; }
-
- private:
-  const std::vector<Item>* store_;
-  size_t index_;
-};
-
-class SliceManifold final : public StoredManifold<Slice> {
+class SliceManifold final : public StoredView<OneRobotManifold, Slice> {
  public:
   static const ManifoldFamily kFamily;
-  using StoredManifold::StoredManifold;
+  using StoredView::StoredView;
   const Slice& slice() const { return item(); }
 
   const ManifoldFamily& family() const override { return kFamily; }
@@ -67,10 +41,10 @@ class SliceManifold final : public StoredManifold<Slice> {
   Pose fixedAt() const override { return {0, 0, slice().theta()}; }
 };
 
-class LineManifold final : public StoredManifold<Line> {
+class LineManifold final : public StoredView<OneRobotManifold, Line> {
  public:
   static const ManifoldFamily kFamily;
-  using StoredManifold::StoredManifold;
+  using StoredView::StoredView;
   const Line& line() const { return item(); }
 
   const ManifoldFamily& family() const override { return kFamily; }
@@ -82,6 +56,10 @@ class LineManifold final : public StoredManifold<Line> {
   unsigned fixes() const override { return kX | kY; }
   Pose fixedAt() const override { return {line().point().x, line().point().y, 0}; }
 };
+
+/// The route of a reference point inside cell `cell` of `slice` from a to b (CellRoute.h): the
+/// points after a, the last b; nothing if none is found. Every slice family's motion.
+std::optional<std::vector<Vec2>> slideInCell(const Slice& slice, size_t cell, Vec2 a, Vec2 b);
 
 /// The meeting rule of any two one-robot manifolds: in one frame, the pose whose coordinates
 /// the two fix together (a slice and a line; two slices or two lines share no single point);

@@ -38,21 +38,11 @@ void CompoundSubspace::addSlice(const Slice& carrierBase, const SliceWorld& atta
 }
 
 uint32_t CompoundSubspace::addLine(Vec2 p) {
-  Stopwatch watch;
-  lines_.emplace_back(
-      lineWorld_, [this](const Pose& q) { return free(q); }, p, &stats_.lineStats);
-  stats_.lineSeconds += watch.seconds();
-  const size_t l = lines_.size() - 1;
-  const uint32_t id =
-      roadmap_.add(std::make_unique<CompoundLineManifold>(frame_, lines_, l), group_, uint32_t(l));
-  lineIds_.push_back(id);
-  ++stats_.lines;
-  stats_.lineArcs += lines_[l].arcs().size();
-  Stopwatch connect;
-  if (!lines_[l].arcs().empty())
-    for (const uint32_t slice : sliceIds_) roadmap_.join(id, slice);
-  stats_.connectSeconds += connect.seconds();
-  return id;
+  lineIds_.push_back(addJoinedLine(
+      roadmap_, stats_, lines_, lineWorld_, [this](const Pose& q) { return free(q); }, p, group_,
+      [this](size_t l) { return std::make_unique<CompoundLineManifold>(frame_, lines_, l); },
+      {&sliceIds_}));
+  return lineIds_.back();
 }
 
 std::optional<Vec2> CompoundSubspace::pointInCell(Random& rng) const {

@@ -116,23 +116,11 @@ size_t Subspace::addOverlay(Slice slice) {
 }
 
 size_t Subspace::addLine(Vec2 p) {
-  Stopwatch watch;
-  lines_.emplace_back(
-      lineWorld_, [this](const Pose& q) { return free(q); }, p, &stats_.lineStats);
-  stats_.lineSeconds += watch.seconds();
-  const size_t l = lines_.size() - 1;
-  const uint32_t id =
-      roadmap_.add(std::make_unique<LineManifold>(frame_, lines_, l), frame_.id, uint32_t(l));
-  lineIds_.push_back(id);
-  ++stats_.lines;
-  stats_.lineArcs += lines_[l].arcs().size();
-  Stopwatch watchConnect;
-  if (!lines_[l].arcs().empty()) {
-    for (const uint32_t slice : sliceIds_) roadmap_.join(id, slice);
-    for (const uint32_t slice : localIds_) roadmap_.join(id, slice);
-  }
-  stats_.connectSeconds += watchConnect.seconds();
-  return l;
+  lineIds_.push_back(addJoinedLine(
+      roadmap_, stats_, lines_, lineWorld_, [this](const Pose& q) { return free(q); }, p, frame_.id,
+      [this](size_t l) { return std::make_unique<LineManifold>(frame_, lines_, l); },
+      {&sliceIds_, &localIds_}));
+  return lines_.size() - 1;
 }
 
 long Subspace::sliceNodeAt(size_t k, Vec2 p, bool knownFree) const {

@@ -12,6 +12,7 @@
 #include "manifolds/Line.h"
 #include "manifolds/OneRobot.h"
 #include "manifolds/Slice.h"
+#include "mms/Termination.h"
 
 namespace mms {
 
@@ -34,6 +35,29 @@ Scene withContactShapes(const Scene& scene, const CollisionChecker& checker);
 /// at the time limit) ends it: the slices before it have been added. Returns the seconds spent.
 double buildSlices(const SliceWorld& world, const std::vector<double>& thetas, unsigned threads,
                    PointLocation strategy, const std::function<void(Slice&&)>& add);
+
+/// A line at p (free arcs decided by `free`) appended to `lines`, added to the roadmap as
+/// `make(index)` in `group`, and joined to the slices whose roadmap ids `slices` list. What a
+/// subspace of one robot and one of a compound both do to add a line. Returns its roadmap id.
+template <class Make>
+uint32_t addJoinedLine(Roadmap& roadmap, SubspaceStats& stats, std::vector<Line>& lines,
+                       const LineWorld& world, const PoseTest& free, Vec2 p, uint32_t group,
+                       const Make& make,
+                       std::initializer_list<const std::vector<uint32_t>*> slices) {
+  Stopwatch watch;
+  lines.emplace_back(world, free, p, &stats.lineStats);
+  stats.lineSeconds += watch.seconds();
+  const size_t l = lines.size() - 1;
+  const uint32_t id = roadmap.add(make(l), group, uint32_t(l));
+  ++stats.lines;
+  stats.lineArcs += lines[l].arcs().size();
+  Stopwatch connect;
+  if (!lines[l].arcs().empty())
+    for (const std::vector<uint32_t>* ids : slices)
+      for (const uint32_t slice : *ids) roadmap.join(id, slice);
+  stats.connectSeconds += connect.seconds();
+  return id;
+}
 
 class Subspace {
  public:
