@@ -4,15 +4,14 @@
 
 namespace mms {
 
-const ManifoldFamily CompoundSliceManifold::kFamily{"compound-slice"};
-const ManifoldFamily CompoundLineManifold::kFamily{"compound-line"};
+const ManifoldFamily CompoundFrame::kSliceFamily{"compound-slice"};
+const ManifoldFamily CompoundFrame::kLineFamily{"compound-line"};
 
 namespace {
 Vec2 rotated(Vec2 v, double theta) {
   const double c = std::cos(theta), s = std::sin(theta);
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
-Pose poseIn(const Config& q, size_t robot) { return poseOf(q, robot); }
 void put(Config& q, size_t robot, const Pose& p) {
   q[3 * robot] = p.x;
   q[3 * robot + 1] = p.y;
@@ -69,42 +68,6 @@ std::vector<Ring> compoundShapes(const Scene& scene, const CompoundFrame& f) {
   for (const Vec2 v : scene.robots[f.attached].shape)
     attached.push_back(f.offset + rotated(v, f.dtheta));
   return {scene.robots[f.carrier].shape, attached};
-}
-
-long CompoundSliceManifold::locate(const Config& q) const {
-  const size_t c = frame().carrier;
-  return item().locate({q[3 * c], q[3 * c + 1]});
-}
-
-std::optional<std::vector<Config>> CompoundSliceManifold::motion(size_t cell, const Config& from,
-                                                                 const Config& to) const {
-  const size_t c = frame().carrier;
-  const auto route =
-      slideInCell(item(), cell, {from[3 * c], from[3 * c + 1]}, {to[3 * c], to[3 * c + 1]});
-  if (!route) return std::nullopt;
-  const double theta = from[3 * c + 2];
-  std::vector<Config> out;
-  for (const Vec2 p : *route) out.push_back(frame().moved(from, {p.x, p.y, theta}));
-  return out;
-}
-
-long CompoundLineManifold::locate(const Config& q) const {
-  return item().arcContaining(q[3 * frame().carrier + 2]);
-}
-
-std::optional<std::vector<Config>> CompoundLineManifold::motion(size_t cell, const Config& from,
-                                                                const Config& to) const {
-  const size_t c = frame().carrier;
-  const double theta0 = from[3 * c + 2];
-  const double turn = item().arcs()[cell].turn(theta0, to[3 * c + 2]);
-  const int steps = std::max(1, int(std::ceil(std::abs(turn) / kStep)));
-  std::vector<Config> out;
-  Pose carrier = poseIn(from, c);
-  for (int i = 1; i <= steps; ++i) {
-    carrier.theta = theta0 + turn * i / steps;
-    out.push_back(frame().moved(from, carrier));
-  }
-  return out;
 }
 
 bool meetCompound(const Manifold& ma, const Manifold& mb, Config& at) {

@@ -8,6 +8,8 @@
 // Each is exact and meets the one-robot families where a held robot stands where the compound
 // puts it, so completeness and certification are untouched (the paper's argument applies to
 // any family of manifolds whose cells are exact).
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -16,6 +18,7 @@
 #include "manifolds/Manifold.h"
 #include "manifolds/OneRobot.h"
 #include "manifolds/Slice.h"
+#include "manifolds/SliceLine.h"
 
 namespace mms {
 
@@ -32,6 +35,13 @@ struct CompoundFrame {
   Config config(const Pose& carrier) const;
   /// `q` with the carrier at `carrier` and the attached robot where it puts it.
   Config moved(const Config& q, const Pose& carrier) const;
+  size_t mover() const { return carrier; }
+  /// The pair turns about the carrier's reference point in steps of at most kStep radians: the
+  /// attached robot's straight moves between them stray from its circle by at most
+  /// |offset| kStep^2 / 8 (1.3e-5 |offset|), far inside the play of any cell worth certifying.
+  static constexpr double kStep = 0.01;
+  static const ManifoldFamily kSliceFamily, kLineFamily;
+  static int turnSteps(double turn) { return std::max(1, int(std::ceil(std::abs(turn) / kStep))); }
 };
 
 /// The rigid compound's shapes in the carrier's frame (for compound lines).
@@ -40,36 +50,8 @@ std::vector<Ring> compoundShapes(const Scene& scene, const CompoundFrame& frame)
 /// The carrier's coordinates a compound manifold fixes: as a one-robot manifold's.
 using CompoundManifold = FramedManifold<CompoundFrame>;
 
-class CompoundSliceManifold final : public StoredView<CompoundManifold, Slice> {
- public:
-  static const ManifoldFamily kFamily;
-  using StoredView::StoredView;
-  const ManifoldFamily& family() const override { return kFamily; }
-  size_t cellCount() const override { return item().fscCount(); }
-  long locate(const Config& q) const override;
-  /// Both robots translate along a route through the cell (the attached one alongside).
-  std::optional<std::vector<Config>> motion(size_t cell, const Config& from,
-                                            const Config& to) const override;
-  unsigned fixes() const override { return OneRobotManifold::kTheta; }
-  Pose fixedAt() const override { return {0, 0, item().theta()}; }
-};
-
-class CompoundLineManifold final : public StoredView<CompoundManifold, Line> {
- public:
-  static const ManifoldFamily kFamily;
-  using StoredView::StoredView;
-  const ManifoldFamily& family() const override { return kFamily; }
-  size_t cellCount() const override { return item().arcs().size(); }
-  long locate(const Config& q) const override;
-  /// Both turn about the carrier's reference point, in steps of at most kStep radians: the
-  /// attached robot's straight moves between them stray from its circle by at most
-  /// |offset| kStep^2 / 8 (1.3e-5 |offset|), far inside the play of any cell worth certifying.
-  std::optional<std::vector<Config>> motion(size_t cell, const Config& from,
-                                            const Config& to) const override;
-  unsigned fixes() const override { return OneRobotManifold::kX | OneRobotManifold::kY; }
-  Pose fixedAt() const override { return {item().point().x, item().point().y, 0}; }
-  static constexpr double kStep = 0.01;
-};
+using CompoundSliceManifold = SliceOf<CompoundFrame>;
+using CompoundLineManifold = LineOf<CompoundFrame>;
 
 /// Rules: two compound manifolds of one frame meet as a slice and a line of one robot do; a
 /// compound manifold and a one-robot manifold (the other robot held) meet where the held robot

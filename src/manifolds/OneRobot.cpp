@@ -6,18 +6,13 @@
 
 namespace mms {
 
-const ManifoldFamily SliceManifold::kFamily{"slice"};
-const ManifoldFamily LineManifold::kFamily{"line"};
+const ManifoldFamily HeldFrame::kSliceFamily{"slice"};
+const ManifoldFamily HeldFrame::kLineFamily{"line"};
 
 const Pose* HeldFrame::heldPose(size_t robot) const {
   for (const auto& [r, pose] : held)
     if (r == robot) return &pose;
   return nullptr;
-}
-
-long SliceManifold::locate(const Config& q) const {
-  const size_t m = frame().moving;
-  return slice().locate({q[3 * m], q[3 * m + 1]});
 }
 
 std::optional<std::vector<Vec2>> slideInCell(const Slice& slice, size_t cell, Vec2 a, Vec2 b) {
@@ -27,30 +22,12 @@ std::optional<std::vector<Vec2>> slideInCell(const Slice& slice, size_t cell, Ve
   return route;
 }
 
-std::optional<std::vector<Config>> SliceManifold::motion(size_t cell, const Config& from,
-                                                         const Config& to) const {
-  const size_t m = frame().moving;
-  const auto route =
-      slideInCell(slice(), cell, {from[3 * m], from[3 * m + 1]}, {to[3 * m], to[3 * m + 1]});
-  if (!route) return std::nullopt;
-  std::vector<Config> out(route->size(), from);
-  for (size_t j = 0; j < route->size(); ++j) {
-    out[j][3 * m] = (*route)[j].x;
-    out[j][3 * m + 1] = (*route)[j].y;
-  }
+Config HeldFrame::moved(const Config& q, const Pose& p) const {
+  Config out = q;
+  out[3 * moving] = p.x;
+  out[3 * moving + 1] = p.y;
+  out[3 * moving + 2] = p.theta;
   return out;
-}
-
-long LineManifold::locate(const Config& q) const {
-  return line().arcContaining(q[3 * frame().moving + 2]);
-}
-
-std::optional<std::vector<Config>> LineManifold::motion(size_t cell, const Config& from,
-                                                        const Config& to) const {
-  const size_t m = frame().moving;
-  Config q = from;
-  q[3 * m + 2] += line().arcs()[cell].turn(from[3 * m + 2], to[3 * m + 2]);
-  return std::vector<Config>{q};
 }
 
 namespace {

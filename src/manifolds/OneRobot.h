@@ -11,6 +11,7 @@
 #include "manifolds/Line.h"
 #include "manifolds/Manifold.h"
 #include "manifolds/Slice.h"
+#include "manifolds/SliceLine.h"
 
 namespace mms {
 
@@ -21,45 +22,18 @@ struct HeldFrame {
   size_t moving = 0;
   std::vector<std::pair<size_t, Pose>> held;
   const Pose* heldPose(size_t robot) const;
+  size_t mover() const { return moving; }
+  /// q with the moving robot at p.
+  Config moved(const Config& q, const Pose& p) const;
+  /// A lone robot turning in place: one straight step is the exact motion.
+  static int turnSteps(double) { return 1; }
+  static const ManifoldFamily kSliceFamily, kLineFamily;
 };
 
 using OneRobotManifold = FramedManifold<HeldFrame>;
 
-class SliceManifold final : public StoredView<OneRobotManifold, Slice> {
- public:
-  static const ManifoldFamily kFamily;
-  using StoredView::StoredView;
-  const Slice& slice() const { return item(); }
-
-  const ManifoldFamily& family() const override { return kFamily; }
-  size_t cellCount() const override { return slice().fscCount(); }
-  long locate(const Config& q) const override;
-  /// Translation along a route through the cell's triangulation (CellRoute.h).
-  std::optional<std::vector<Config>> motion(size_t cell, const Config& from,
-                                            const Config& to) const override;
-  unsigned fixes() const override { return kTheta; }
-  Pose fixedAt() const override { return {0, 0, slice().theta()}; }
-};
-
-class LineManifold final : public StoredView<OneRobotManifold, Line> {
- public:
-  static const ManifoldFamily kFamily;
-  using StoredView::StoredView;
-  const Line& line() const { return item(); }
-
-  const ManifoldFamily& family() const override { return kFamily; }
-  size_t cellCount() const override { return line().arcs().size(); }
-  long locate(const Config& q) const override;
-  /// Rotation in place inside the arc (on a full circle, the short way).
-  std::optional<std::vector<Config>> motion(size_t cell, const Config& from,
-                                            const Config& to) const override;
-  unsigned fixes() const override { return kX | kY; }
-  Pose fixedAt() const override { return {line().point().x, line().point().y, 0}; }
-};
-
-/// The route of a reference point inside cell `cell` of `slice` from a to b (CellRoute.h): the
-/// points after a, the last b; nothing if none is found. Every slice family's motion.
-std::optional<std::vector<Vec2>> slideInCell(const Slice& slice, size_t cell, Vec2 a, Vec2 b);
+using SliceManifold = SliceOf<HeldFrame>;
+using LineManifold = LineOf<HeldFrame>;
 
 /// The meeting rule of any two one-robot manifolds: in one frame, the pose whose coordinates
 /// the two fix together (a slice and a line; two slices or two lines share no single point);
