@@ -20,12 +20,7 @@ using namespace mms::test;
 namespace {
 
 CompoundFrame startFrame(const Scene& s) {
-  const Pose a = s.robots[0].start, b = s.robots[1].start;
-  CompoundFrame f;
-  const double c = std::cos(a.theta), sn = std::sin(a.theta);
-  f.offset = {c * (b.x - a.x) + sn * (b.y - a.y), -sn * (b.x - a.x) + c * (b.y - a.y)};
-  f.dtheta = b.theta - a.theta;
-  return f;
+  return CompoundFrame::between(s.robots[0].start, s.robots[1].start);
 }
 
 Vec2 uniformPoint(const Box& b, Random& rng) {

@@ -39,6 +39,11 @@ using Config = std::vector<double>;
 inline Pose poseOf(const Config& q, size_t robot) {
   return {q[3 * robot], q[3 * robot + 1], q[3 * robot + 2]};
 }
+inline void setPose(Config& q, size_t robot, const Pose& p) {
+  q[3 * robot] = p.x;
+  q[3 * robot + 1] = p.y;
+  q[3 * robot + 2] = p.theta;
+}
 Config startConfig(const Scene& scene);
 Config goalConfig(const Scene& scene);
 

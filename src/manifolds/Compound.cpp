@@ -12,11 +12,6 @@ Vec2 rotated(Vec2 v, double theta) {
   const double c = std::cos(theta), s = std::sin(theta);
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
-void put(Config& q, size_t robot, const Pose& p) {
-  q[3 * robot] = p.x;
-  q[3 * robot + 1] = p.y;
-  q[3 * robot + 2] = p.theta;
-}
 // Poses computed through the relative pose carry rounding: equal within a hair.
 bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * (1 + std::abs(a)); }
 bool nearAngle(double a, double b) { return std::abs(std::remainder(a - b, 2 * M_PI)) <= 1e-9; }
@@ -49,19 +44,21 @@ Pose CompoundFrame::carrierFor(const Pose& a) const {
   return {p.x, p.y, theta};
 }
 
+CompoundFrame CompoundFrame::between(const Pose& c, const Pose& a) {
+  CompoundFrame f;
+  f.offset = rotated({a.x - c.x, a.y - c.y}, -c.theta);
+  f.dtheta = std::remainder(a.theta - c.theta, 2 * M_PI);
+  return f;
+}
+
 Config CompoundFrame::moved(const Config& q, const Pose& c) const {
   Config out = q;
-  put(out, carrier, c);
-  put(out, attached, attachedPose(c));
+  setPose(out, carrier, c);
+  setPose(out, attached, attachedPose(c));
   return out;
 }
 
-Config CompoundFrame::config(const Pose& c) const {
-  Config q(3 * robots);
-  put(q, carrier, c);
-  put(q, attached, attachedPose(c));
-  return q;
-}
+Config CompoundFrame::config(const Pose& c) const { return moved(Config(3 * robots), c); }
 
 std::vector<Ring> compoundShapes(const Scene& scene, const CompoundFrame& f) {
   Ring attached;
@@ -73,12 +70,8 @@ std::vector<Ring> compoundShapes(const Scene& scene, const CompoundFrame& f) {
 bool meetCompound(const Manifold& ma, const Manifold& mb, Config& at) {
   const auto& a = static_cast<const CompoundManifold&>(ma);
   const auto& b = static_cast<const CompoundManifold&>(mb);
-  if (&a.frame() != &b.frame() || (a.fixes() & b.fixes()) != 0 || (a.fixes() | b.fixes()) != 7u)
-    return false;
-  const Pose pa = a.fixedAt(), pb = b.fixedAt();
-  const Pose carrier{a.fixes() & OneRobotManifold::kX ? pa.x : pb.x,
-                     a.fixes() & OneRobotManifold::kY ? pa.y : pb.y,
-                     a.fixes() & OneRobotManifold::kTheta ? pa.theta : pb.theta};
+  Pose carrier;
+  if (&a.frame() != &b.frame() || !jointPose(a, b, carrier)) return false;
   at = a.frame().config(carrier);
   return true;
 }
@@ -96,8 +89,8 @@ bool meetCompoundOneRobot(const Manifold& mc, const Manifold& mo, Config& at) {
   Pose moving = h.moving == f.carrier ? carrier : f.attachedPose(carrier);
   if (!pin(o.fixes(), o.fixedAt(), moving)) return false;
   at.assign(3 * f.robots, 0.0);
-  put(at, heldRobot, heldPose);
-  put(at, h.moving, moving);
+  setPose(at, heldRobot, heldPose);
+  setPose(at, h.moving, moving);
   return true;
 }
 

@@ -24,11 +24,12 @@ namespace mms {
 
 /// Which robot carries which, and in what relative pose.
 struct CompoundFrame {
-  uint32_t id = 0;
   size_t robots = 2;
   size_t carrier = 0, attached = 1;
   Vec2 offset;        // the attached robot's reference point in the carrier's frame
   double dtheta = 0;  // the attached robot's angle minus the carrier's
+  /// Robot 1 at `attached` relative to robot 0 at `carrier`.
+  static CompoundFrame between(const Pose& carrier, const Pose& attached);
   Pose attachedPose(const Pose& carrier) const;
   /// The carrier's pose that puts the attached robot at `attached`.
   Pose carrierFor(const Pose& attached) const;

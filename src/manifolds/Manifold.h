@@ -49,6 +49,20 @@ class FramedManifold : public Manifold {
   const Frame* frame_;
 };
 
+/// Where two manifolds of one frame that fix complementary coordinates of its moving body (a
+/// slice's angle, a line's position) meet: the body's pose; false if they do not fix them
+/// between them, or both fix some (two slices or two lines share no single point).
+template <class Frame>
+bool jointPose(const FramedManifold<Frame>& a, const FramedManifold<Frame>& b, Pose& out) {
+  using F = FramedManifold<Frame>;
+  if ((a.fixes() | b.fixes()) != (F::kX | F::kY | F::kTheta) || (a.fixes() & b.fixes()) != 0)
+    return false;
+  const Pose pa = a.fixedAt(), pb = b.fixedAt();
+  out = {a.fixes() & F::kX ? pa.x : pb.x, a.fixes() & F::kY ? pa.y : pb.y,
+         a.fixes() & F::kTheta ? pa.theta : pb.theta};
+  return true;
+}
+
 /// A manifold that is a view of item `index` of a vector its planner keeps (the vector may grow;
 /// the index stays): Base is the family's frame-holding base class.
 template <class Base, class Item>

@@ -24,9 +24,7 @@ std::optional<std::vector<Vec2>> slideInCell(const Slice& slice, size_t cell, Ve
 
 Config HeldFrame::moved(const Config& q, const Pose& p) const {
   Config out = q;
-  out[3 * moving] = p.x;
-  out[3 * moving + 1] = p.y;
-  out[3 * moving + 2] = p.theta;
+  setPose(out, moving, p);
   return out;
 }
 
@@ -43,11 +41,6 @@ bool onManifold(const OneRobotManifold& m, const Pose& p) {
     return false;
   return true;
 }
-void put(Config& q, size_t robot, const Pose& p) {
-  q[3 * robot] = p.x;
-  q[3 * robot + 1] = p.y;
-  q[3 * robot + 2] = p.theta;
-}
 }  // namespace
 
 bool meetOneRobot(const Manifold& ma, const Manifold& mb, Config& q) {
@@ -56,16 +49,10 @@ bool meetOneRobot(const Manifold& ma, const Manifold& mb, Config& q) {
   const HeldFrame &fa = a.frame(), &fb = b.frame();
   q.resize(3 * fa.robots);
   if (&fa == &fb) {
-    if ((a.fixes() | b.fixes()) !=
-            (OneRobotManifold::kX | OneRobotManifold::kY | OneRobotManifold::kTheta) ||
-        (a.fixes() & b.fixes()) != 0)
-      return false;  // two slices or two lines: no single meeting point
-    const Pose pa = a.fixedAt(), pb = b.fixedAt();
-    const Pose moving{a.fixes() & OneRobotManifold::kX ? pa.x : pb.x,
-                      a.fixes() & OneRobotManifold::kY ? pa.y : pb.y,
-                      a.fixes() & OneRobotManifold::kTheta ? pa.theta : pb.theta};
-    for (const auto& [robot, pose] : fa.held) put(q, robot, pose);
-    put(q, fa.moving, moving);
+    Pose moving;
+    if (!jointPose(a, b, moving)) return false;
+    for (const auto& [robot, pose] : fa.held) setPose(q, robot, pose);
+    setPose(q, fa.moving, moving);
     return true;
   }
   if (fa.moving == fb.moving) return false;  // different held poses: disjoint
@@ -73,14 +60,14 @@ bool meetOneRobot(const Manifold& ma, const Manifold& mb, Config& q) {
     const Pose *inA = fa.heldPose(r), *inB = fb.heldPose(r);
     if (r == fa.moving) {
       if (!inB || !onManifold(a, *inB)) return false;
-      put(q, r, *inB);
+      setPose(q, r, *inB);
     } else if (r == fb.moving) {
       if (!inA || !onManifold(b, *inA)) return false;
-      put(q, r, *inA);
+      setPose(q, r, *inA);
     } else {
       if (!inA || !inB || !(inA->x == inB->x && inA->y == inB->y && inA->theta == inB->theta))
         return false;
-      put(q, r, *inA);
+      setPose(q, r, *inA);
     }
   }
   return true;

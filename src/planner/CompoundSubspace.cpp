@@ -28,13 +28,9 @@ void CompoundSubspace::addSlice(const Slice& carrierBase, const SliceWorld& atta
   slices_.emplace_back(carrierBase, attached, frame_.offset);
   stats_.sliceSeconds += watch.seconds();
   const size_t k = slices_.size() - 1;
-  sliceIds_.push_back(roadmap_.add(std::make_unique<CompoundSliceManifold>(frame_, slices_, k),
-                                   group_, uint32_t(k)));
-  ++stats_.slices;
-  stats_.sliceCells += slices_[k].fscCount();
-  Stopwatch connect;
-  for (const uint32_t line : lineIds_) roadmap_.join(line, sliceIds_.back());
-  stats_.connectSeconds += connect.seconds();
+  sliceIds_.push_back(addJoinedSlice(roadmap_, stats_,
+                                     std::make_unique<CompoundSliceManifold>(frame_, slices_, k),
+                                     group_, uint32_t(k), lineIds_));
 }
 
 uint32_t CompoundSubspace::addLine(Vec2 p) {

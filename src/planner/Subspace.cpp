@@ -74,28 +74,17 @@ bool Subspace::free(const Pose& q) const {
   return true;
 }
 
+// `index` is the slice's place in `store`, with kLocal set for a local slice.
 uint32_t Subspace::addSliceManifold(const std::vector<Slice>& store, uint32_t index) {
-  const Slice& slice = store[index & ~kLocal];
-  const uint32_t id = roadmap_.add(std::make_unique<SliceManifold>(frame_, store, index & ~kLocal),
-                                   frame_.id, index);
-  ++stats_.slices;
-  stats_.sliceCells += slice.fscCount();
-  return id;
+  return addJoinedSlice(roadmap_, stats_,
+                        std::make_unique<SliceManifold>(frame_, store, index & ~kLocal), frame_.id,
+                        index, lineIds_);
 }
 
 void Subspace::addLocalOverlay(Slice slice) {
   localSlices_.push_back(std::move(slice));
-  const size_t k = localSlices_.size() - 1;
-  localIds_.push_back(addSliceManifold(localSlices_, kLocal | uint32_t(k)));
+  localIds_.push_back(addSliceManifold(localSlices_, kLocal | uint32_t(localSlices_.size() - 1)));
   ++stats_.localSlices;
-  connectToLines(localIds_.back());
-}
-
-// A line's arc is found by one binary search, a slice's cell by point location: lines first.
-void Subspace::connectToLines(uint32_t slice) {
-  Stopwatch watchConnect;
-  for (const uint32_t line : lineIds_) roadmap_.join(line, slice);
-  stats_.connectSeconds += watchConnect.seconds();
 }
 
 Slice Subspace::overlay(const Slice& base) const { return Slice(base, heldShapes_); }
@@ -111,7 +100,6 @@ size_t Subspace::addOverlay(Slice slice) {
   slices_.push_back(std::move(slice));
   const size_t k = slices_.size() - 1;
   sliceIds_.push_back(addSliceManifold(slices_, uint32_t(k)));
-  connectToLines(sliceIds_.back());
   return k;
 }
 

@@ -36,6 +36,23 @@ Scene withContactShapes(const Scene& scene, const CollisionChecker& checker);
 double buildSlices(const SliceWorld& world, const std::vector<double>& thetas, unsigned threads,
                    PointLocation strategy, const std::function<void(Slice&&)>& add);
 
+/// A slice-family manifold added to the roadmap as `index` in `group` and joined to the lines
+/// whose roadmap ids `lines` lists (a line's arc is found by one binary search, a slice's cell
+/// by point location: the line first). What a subspace of one robot and one of a compound both
+/// do to add a slice. Returns its roadmap id.
+inline uint32_t addJoinedSlice(Roadmap& roadmap, SubspaceStats& stats,
+                               std::unique_ptr<Manifold> slice, uint32_t group, uint32_t index,
+                               const std::vector<uint32_t>& lines) {
+  const size_t cells = slice->cellCount();
+  const uint32_t id = roadmap.add(std::move(slice), group, index);
+  ++stats.slices;
+  stats.sliceCells += cells;
+  Stopwatch connect;
+  for (const uint32_t line : lines) roadmap.join(line, id);
+  stats.connectSeconds += connect.seconds();
+  return id;
+}
+
 /// A line at p (free arcs decided by `free`) appended to `lines`, added to the roadmap as
 /// `make(index)` in `group`, and joined to the slices whose roadmap ids `slices` list. What a
 /// subspace of one robot and one of a compound both do to add a line. Returns its roadmap id.
@@ -107,7 +124,6 @@ class Subspace {
 
  private:
   uint32_t addSliceManifold(const std::vector<Slice>& store, uint32_t index);
-  void connectToLines(uint32_t slice);
 
   HeldFrame frame_;
   const CollisionChecker& checker_;

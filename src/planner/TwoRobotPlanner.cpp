@@ -88,17 +88,6 @@ void TwoRobotPlanner::addAngles(size_t robot, const std::vector<double>& thetas,
 TwoRobotPlanner::~TwoRobotPlanner() = default;
 
 namespace {
-// Robot 1's pose relative to robot 0's frame.
-CompoundFrame relativeFrame(const Pose& a, const Pose& b) {
-  CompoundFrame f;
-  f.carrier = 0;
-  f.attached = 1;
-  const double c = std::cos(a.theta), s = std::sin(a.theta);
-  const Vec2 d{b.x - a.x, b.y - a.y};
-  f.offset = {c * d.x + s * d.y, -s * d.x + c * d.y};
-  f.dtheta = std::remainder(b.theta - a.theta, 2 * M_PI);
-  return f;
-}
 bool sameRelativePose(const CompoundFrame& f, const CompoundFrame& g) {
   return std::hypot(f.offset.x - g.offset.x, f.offset.y - g.offset.y) <=
              1e-9 * (1 + std::hypot(f.offset.x, f.offset.y)) &&
@@ -120,8 +109,9 @@ void TwoRobotPlanner::addCompound(const Termination& stop) {
   if (checker_.robotsDistance(0, a.start, 1, b.start) > reach ||
       checker_.robotsDistance(0, a.goal, 1, b.goal) > reach)
     return;
-  std::vector<CompoundFrame> frames{relativeFrame(a.start, b.start)};
-  if (const CompoundFrame g = relativeFrame(a.goal, b.goal); !sameRelativePose(frames[0], g))
+  std::vector<CompoundFrame> frames{CompoundFrame::between(a.start, b.start)};
+  if (const CompoundFrame g = CompoundFrame::between(a.goal, b.goal);
+      !sameRelativePose(frames[0], g))
     frames.push_back(g);
   for (const CompoundFrame& f : frames) {
     if (stop()) return;
