@@ -205,8 +205,11 @@ TEST(BenchCommand, ARunWithTwoThreadsHasTheCoresToItself) {
 
 TEST(BenchCommand, MemoryLimitIsEnforcedAndRecorded) {
   TempDir dir;
-  // The sealed scene grows its roadmap until the time limit: far past 100 MB.
-  const Outcome r = runMms("bench " + quote(scenario("one-robot/sealed-ring.json")) +
+  // Two robots among 3000 obstacles: the exact geometry alone is far past 100 MB within seconds.
+  const std::string scene = dir.path("crowded.json");
+  ASSERT_EQ(runMms("scenario random --seed 4 --robots 2 --obstacles 3000 -o " + quote(scene)).code,
+            0);
+  const Outcome r = runMms("bench " + quote(scene) +
                            " --planners mms --runs 1 --time-limit 20 --memory-limit 100 -o " +
                            quote(dir.path("b")));
   EXPECT_EQ(r.code, 0) << r.err;

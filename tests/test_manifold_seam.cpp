@@ -4,6 +4,7 @@
 // take without an edit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "check/PathChecker.h"
@@ -77,6 +78,71 @@ TEST(ManifoldSeam, SliceAndLineOfOneFrameMeetAtLinePointAndSliceAngle) {
   // Two slices, or two lines, of one frame share no single point.
   EXPECT_FALSE(meetingPoint(roadmap.manifold(sliceIds[0]), roadmap.manifold(sliceIds[1])));
   EXPECT_FALSE(meetingPoint(roadmap.manifold(lineIds[0]), roadmap.manifold(lineIds[1])));
+}
+
+// A weave stores no edge, yet decides connectivity and finds fewest-cells paths exactly as
+// the same joins stored one by one (the reference: join() of every line-slice pair).
+TEST(ManifoldSeam, AWeaveConnectsAndSearchesAsStoredEdgesDo) {
+  const Scene scene = clutter(4);
+  const CollisionChecker checker(scene);
+  const SliceWorld sliceWorld(scene, 0);
+  const LineWorld lineWorld(scene, 0);
+  const HeldFrame frame{0, 1, 0, {}};
+  std::vector<Slice> slices;
+  std::vector<Line> lines;
+  Random rng(11);
+  for (int k = 0; k < 6; ++k)
+    slices.emplace_back(sliceWorld, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
+  for (int l = 0; l < 80; ++l)
+    lines.emplace_back(
+        lineWorld, [&](const Pose& q) { return checker.robotFree(0, q); },
+        uniformPoint(scene.bounds, rng));
+  Roadmap stored, woven;
+  const uint32_t w = woven.addWeave();
+  std::vector<uint32_t> sliceIds, lineIds;
+  // Interleaved as a planner adds them: each new manifold meets those already on the other side.
+  for (size_t l = 0; l < lines.size(); ++l) {
+    if (l % 14 == 0 && l / 14 < slices.size()) {
+      const size_t k = l / 14;
+      sliceIds.push_back(stored.add(std::make_unique<SliceManifold>(frame, slices, k), 0, k));
+      ASSERT_EQ(woven.add(std::make_unique<SliceManifold>(frame, slices, k), 0, k),
+                sliceIds.back());
+      woven.weave(w, 1, sliceIds.back());
+    }
+    lineIds.push_back(stored.add(std::make_unique<LineManifold>(frame, lines, l), 0, l));
+    ASSERT_EQ(woven.add(std::make_unique<LineManifold>(frame, lines, l), 0, l), lineIds.back());
+    woven.weave(w, 0, lineIds.back());
+  }
+  for (const uint32_t line : lineIds)
+    for (const uint32_t slice : sliceIds) stored.join(line, slice);
+  ASSERT_EQ(stored.nodeCount(), woven.nodeCount());
+  size_t storedEdges = 0;
+  for (size_t v = 0; v < woven.nodeCount(); ++v) {
+    EXPECT_TRUE(woven.graph().neighbours(v).empty());
+    storedEdges += stored.graph().neighbours(v).size();
+  }
+  ASSERT_GT(storedEdges, 200u);
+  size_t paths = 0;
+  for (int q = 0; q < 300; ++q) {
+    const size_t a = rng.below(stored.nodeCount()), b = rng.below(stored.nodeCount());
+    ASSERT_EQ(woven.graph().connected(a, b), stored.graph().connected(a, b)) << a << " " << b;
+    const auto ps = stored.graph().path(a, b), pw = woven.path(a, b);
+    ASSERT_EQ(ps.has_value(), pw.has_value());
+    if (!ps) continue;
+    ++paths;
+    EXPECT_EQ(ps->size(), pw->size());             // both fewest cells
+    for (size_t i = 0; i + 1 < pw->size(); ++i) {  // each step is a stored edge
+      const auto& n = stored.graph().neighbours((*pw)[i]);
+      EXPECT_NE(std::find(n.begin(), n.end(), uint32_t((*pw)[i + 1])), n.end());
+    }
+  }
+  EXPECT_GT(paths, 30u);
+  // A search that is told to stop gives up (when it has weave edges to compute).
+  for (size_t v = 1; v < woven.nodeCount(); ++v)
+    if (woven.graph().connected(0, v)) {
+      EXPECT_FALSE(woven.path(0, v, [] { return true; }));
+      break;
+    }
 }
 
 // Across frames (recursive MMS): each robot where the other frame holds it, if that lies on

@@ -174,14 +174,35 @@ struct LoopStats {
   double searchSeconds = 0, motionSeconds = 0, shortcutSeconds = 0, certifySeconds = 0;
 };
 
+// A manifold of `cells` cells that meets nothing: the loop's graph needs nodes, not geometry.
+class Cells final : public Manifold {
+ public:
+  explicit Cells(size_t cells) : cells_(cells) {}
+  const ManifoldFamily& family() const override { return kFamily; }
+  size_t cellCount() const override { return cells_; }
+  long locate(const Config&) const override { return -1; }
+  std::optional<std::vector<Config>> motion(size_t, const Config&, const Config&) const override {
+    return std::nullopt;
+  }
+
+ private:
+  static constexpr ManifoldFamily kFamily{"cells"};
+  size_t cells_;
+};
+
+Roadmap roadmapOfCells(size_t cells) {
+  Roadmap r;
+  r.add(std::make_unique<Cells>(cells), 0, 0);
+  return r;
+}
+
 }  // namespace
 
 // A chain of cells 0 - 1 - ... - 5 that grows one edge per manifold: the search runs as soon
 // as 0 and 5 connect; a refused candidate completes the round before the next search; a
 // complete round doubles the target.
 TEST(Rounds, SearchEarlyCompleteTheRoundAfterARefusalThenDouble) {
-  ConnectivityGraph g;
-  for (int i = 0; i < 6; ++i) g.addNode({0, 0});
+  Roadmap g = roadmapOfCells(6);
   size_t built = 0, target = 2, searches = 0, refusals = 0;
   std::vector<size_t> builtAtSearch;
   RoundHooks h;
@@ -216,8 +237,7 @@ TEST(Rounds, SearchEarlyCompleteTheRoundAfterARefusalThenDouble) {
 }
 
 TEST(Rounds, GiveUpAndStop) {
-  ConnectivityGraph g;
-  for (int i = 0; i < 2; ++i) g.addNode({0, 0});
+  const Roadmap g = roadmapOfCells(2);
   size_t built = 0, target = 1, rounds = 0;
   RoundHooks h;
   h.growing = [&] { return built < target; };

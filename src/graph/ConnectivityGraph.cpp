@@ -27,6 +27,10 @@ size_t ConnectivityGraph::addNode(const Node& n) {
 void ConnectivityGraph::addEdge(size_t a, size_t b) {
   adjacency_[a].push_back(uint32_t(b));
   adjacency_[b].push_back(uint32_t(a));
+  unite(a, b);
+}
+
+void ConnectivityGraph::unite(size_t a, size_t b) {
   ++edges_;
   Sets(rank_.data(), parent_.data()).union_set(a, b);
 }

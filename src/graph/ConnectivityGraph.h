@@ -17,10 +17,15 @@ class ConnectivityGraph {
 
   size_t addNode(const Node& n);
   void addEdge(size_t a, size_t b);
+  /// Records that a and b are connected without storing the edge (its owner recomputes it
+  /// when searching): the union-find only.
+  void unite(size_t a, size_t b);
+  /// The stored edges of v, both ways.
+  const std::vector<uint32_t>& neighbours(size_t v) const { return adjacency_[v]; }
   const Node& node(size_t v) const { return nodes_[v]; }
   size_t nodeCount() const { return nodes_.size(); }
+  /// Stored edges plus those recorded by unite().
   size_t edgeCount() const { return edges_; }
-  size_t degree(size_t v) const { return adjacency_[v].size(); }
 
   /// Whether a and b are connected (incremental union-find, kept as edges are added).
   bool connected(size_t a, size_t b) const;

@@ -3,8 +3,16 @@
 // each manifold with its family and its planner's bookkeeping (group, index). It joins any
 // two manifolds through the meeting table (manifolds/Manifold.h), so the graph, the search and
 // the path stage need no edit when a family is added.
+//
+// Most joins come in weaves: every line of a subspace meets every slice of it, so their edges
+// grow with the product of the manifolds. A weave's edges are not stored: adding a manifold to
+// a weave only unites the cells it meets in the union-find (which decides when to search), and
+// the search recomputes the edges of the manifolds it reaches. The roadmap's memory then grows
+// with the manifolds and their cells, not with the meetings.
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "graph/ConnectivityGraph.h"
@@ -19,7 +27,10 @@ class Roadmap {
     uint32_t group;  // the planner's grouping, e.g. the subspace it belongs to
     uint32_t index;  // the planner's own number for it within the group
     size_t firstNode;
+    uint32_t weave = kNoWeave;  // the weave it is in, if any, and on which side
+    uint8_t side = 0;
   };
+  static constexpr uint32_t kNoWeave = ~uint32_t(0);
 
   /// Adds a manifold and one node per cell (numbered consecutively). Returns its id.
   uint32_t add(std::unique_ptr<Manifold> manifold, uint32_t group, uint32_t index);
@@ -38,6 +49,18 @@ class Roadmap {
   bool join(uint32_t a, uint32_t b);
   void addEdge(size_t nodeA, size_t nodeB) { graph_.addEdge(nodeA, nodeB); }
 
+  /// A new, empty weave: two sides, each manifold on one joined to every manifold on the other.
+  uint32_t addWeave();
+  /// Adds manifold `id` (in no weave yet) to side `side` (0 or 1) of weave `w`, joined to the
+  /// manifolds on the other side. Side 0 is located in first when two meet: put the family
+  /// whose location is cheaper there (lines before slices).
+  void weave(uint32_t w, int side, uint32_t id);
+
+  /// Fewest-cells path from node `from` to node `to` (inclusive) through stored edges and
+  /// weaves; nothing if they are not connected, or if `stop` turns true during the search.
+  std::optional<std::vector<size_t>> path(size_t from, size_t to,
+                                          const std::function<bool()>& stop = {}) const;
+
   const ConnectivityGraph& graph() const { return graph_; }
   size_t nodeCount() const { return graph_.nodeCount(); }
   size_t edgeCount() const { return graph_.edgeCount(); }
@@ -50,9 +73,23 @@ class Roadmap {
   Footprint footprint(const std::vector<size_t>& path) const;
 
  private:
+  struct Weave {
+    std::vector<uint32_t> sides[2];
+  };
+  /// The cells of a and b that hold their meeting point (a located first); false if they do
+  /// not meet or the point is in no cell of one of them.
+  bool meeting(uint32_t a, uint32_t b, long& cellA, long& cellB) const;
+  /// The weave edges of manifold id, grouped by its cell: the nodes cell c meets are
+  /// targets[start[c] .. start[c + 1]).
+  struct Woven {
+    std::vector<uint32_t> start, targets;
+  };
+  Woven woven(uint32_t id) const;
+
   ConnectivityGraph graph_;
   std::vector<Entry> entries_;
-  Config meeting_;  // join's scratch: no allocation per pair
+  std::vector<Weave> weaves_;
+  mutable Config meeting_;  // meeting()'s scratch: no allocation per pair
 };
 
 }  // namespace mms

@@ -13,7 +13,8 @@ CompoundSubspace::CompoundSubspace(uint32_t group, const Scene& scene,
       checker_(checker),
       lineWorld_(compoundShapes(scene, frame), scene.obstacles, scene.bounds),
       roadmap_(roadmap),
-      stats_(stats) {}
+      stats_(stats),
+      weave_(roadmap.addWeave()) {}
 
 bool CompoundSubspace::free(const Pose& q) const {
   const Pose a = frame_.attachedPose(q);
@@ -28,17 +29,15 @@ void CompoundSubspace::addSlice(const Slice& carrierBase, const SliceWorld& atta
   slices_.emplace_back(carrierBase, attached, frame_.offset);
   stats_.sliceSeconds += watch.seconds();
   const size_t k = slices_.size() - 1;
-  sliceIds_.push_back(addJoinedSlice(roadmap_, stats_,
-                                     std::make_unique<CompoundSliceManifold>(frame_, slices_, k),
-                                     group_, uint32_t(k), lineIds_));
+  addJoinedSlice(roadmap_, stats_, std::make_unique<CompoundSliceManifold>(frame_, slices_, k),
+                 group_, uint32_t(k), weave_);
 }
 
 uint32_t CompoundSubspace::addLine(Vec2 p) {
-  lineIds_.push_back(addJoinedLine(
+  return addJoinedLine(
       roadmap_, stats_, lines_, lineWorld_, [this](const Pose& q) { return free(q); }, p, group_,
       [this](size_t l) { return std::make_unique<CompoundLineManifold>(frame_, lines_, l); },
-      {&sliceIds_}));
-  return lineIds_.back();
+      weave_);
 }
 
 std::optional<Vec2> CompoundSubspace::pointInCell(Random& rng) const {

@@ -43,7 +43,7 @@ class CompoundSubspace {
   SubspaceStats& stats_;
   std::vector<Slice> slices_;
   std::vector<Line> lines_;
-  std::vector<uint32_t> sliceIds_, lineIds_;
+  uint32_t weave_;  // its lines and slices, all joined
 };
 
 }  // namespace mms

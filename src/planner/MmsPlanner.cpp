@@ -174,7 +174,7 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
     targetLines *= 2;
     return true;
   };
-  RoundsOutcome o = runRounds(h, roadmap_.graph(), size_t(from), size_t(to), stop, stats_);
+  RoundsOutcome o = runRounds(h, roadmap_, size_t(from), size_t(to), stop, stats_);
   result.certificate = o.motion.certificate;
   if (o.end == RoundsOutcome::End::Found) {
     stats_.pathCells = o.nodes.size();

@@ -8,7 +8,7 @@
 #include <functional>
 #include <vector>
 
-#include "graph/ConnectivityGraph.h"
+#include "graph/Roadmap.h"
 #include "mms/Termination.h"
 #include "path/Motion.h"
 
@@ -34,7 +34,7 @@ struct RoundsOutcome {
 /// `Stats` holds the counters every MMS planner reports: rounds, rejectedPaths and the
 /// seconds of search, motion, shortcut and certify.
 template <class Stats>
-RoundsOutcome runRounds(const RoundHooks& h, const ConnectivityGraph& graph, size_t from, size_t to,
+RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from, size_t to,
                         const Termination& stop, Stats& stats) {
   RoundsOutcome out;
   // After a candidate the checker refused, the round is completed before the next search.
@@ -43,13 +43,14 @@ RoundsOutcome runRounds(const RoundHooks& h, const ConnectivityGraph& graph, siz
   while (true) {
     try {
       h.begin();
-      while (h.growing() && !stop() && !(searchEarly && graph.connected(from, to))) h.grow();
+      while (h.growing() && !stop() && !(searchEarly && roadmap.graph().connected(from, to)))
+        h.grow();
     } catch (const Stopped&) {
       // The limit struck inside a manifold: it is dropped, the search runs on the rest. No
       // round follows, so manifolds cut short never get out of step with the others.
     }
     Stopwatch search;
-    const auto nodes = graph.path(from, to);
+    const auto nodes = roadmap.path(from, to, [&] { return stop(); });
     stats.searchSeconds += search.seconds();
     if (nodes) {
       out.motion = h.motion(*nodes);

@@ -65,7 +65,8 @@ Subspace::Subspace(uint32_t id, const Scene& scene, const CollisionChecker& chec
       heldRings_(placedRings(heldShapes_)),
       lineWorld_(scene, moving, heldRings_),
       roadmap_(roadmap),
-      stats_(stats) {}
+      stats_(stats),
+      weave_(roadmap.addWeave()) {}
 
 bool Subspace::free(const Pose& q) const {
   if (!checker_.robotFree(frame_.moving, q)) return false;
@@ -78,12 +79,12 @@ bool Subspace::free(const Pose& q) const {
 uint32_t Subspace::addSliceManifold(const std::vector<Slice>& store, uint32_t index) {
   return addJoinedSlice(roadmap_, stats_,
                         std::make_unique<SliceManifold>(frame_, store, index & ~kLocal), frame_.id,
-                        index, lineIds_);
+                        index, weave_);
 }
 
 void Subspace::addLocalOverlay(Slice slice) {
   localSlices_.push_back(std::move(slice));
-  localIds_.push_back(addSliceManifold(localSlices_, kLocal | uint32_t(localSlices_.size() - 1)));
+  addSliceManifold(localSlices_, kLocal | uint32_t(localSlices_.size() - 1));
   ++stats_.localSlices;
 }
 
@@ -106,8 +107,7 @@ size_t Subspace::addOverlay(Slice slice) {
 size_t Subspace::addLine(Vec2 p) {
   lineIds_.push_back(addJoinedLine(
       roadmap_, stats_, lines_, lineWorld_, [this](const Pose& q) { return free(q); }, p, frame_.id,
-      [this](size_t l) { return std::make_unique<LineManifold>(frame_, lines_, l); },
-      {&sliceIds_, &localIds_}));
+      [this](size_t l) { return std::make_unique<LineManifold>(frame_, lines_, l); }, weave_));
   return lines_.size() - 1;
 }
 

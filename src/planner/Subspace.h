@@ -36,31 +36,30 @@ Scene withContactShapes(const Scene& scene, const CollisionChecker& checker);
 double buildSlices(const SliceWorld& world, const std::vector<double>& thetas, unsigned threads,
                    PointLocation strategy, const std::function<void(Slice&&)>& add);
 
-/// A slice-family manifold added to the roadmap as `index` in `group` and joined to the lines
-/// whose roadmap ids `lines` lists (a line's arc is found by one binary search, a slice's cell
-/// by point location: the line first). What a subspace of one robot and one of a compound both
+/// A slice-family manifold added to the roadmap as `index` in `group` and woven into side 1 of
+/// `weave` (its lines on side 0: a line's arc is found by one binary search, a slice's cell by
+/// point location, so the line first). What a subspace of one robot and one of a compound both
 /// do to add a slice. Returns its roadmap id.
 inline uint32_t addJoinedSlice(Roadmap& roadmap, SubspaceStats& stats,
                                std::unique_ptr<Manifold> slice, uint32_t group, uint32_t index,
-                               const std::vector<uint32_t>& lines) {
+                               uint32_t weave) {
   const size_t cells = slice->cellCount();
   const uint32_t id = roadmap.add(std::move(slice), group, index);
   ++stats.slices;
   stats.sliceCells += cells;
   Stopwatch connect;
-  for (const uint32_t line : lines) roadmap.join(line, id);
+  roadmap.weave(weave, 1, id);
   stats.connectSeconds += connect.seconds();
   return id;
 }
 
 /// A line at p (free arcs decided by `free`) appended to `lines`, added to the roadmap as
-/// `make(index)` in `group`, and joined to the slices whose roadmap ids `slices` list. What a
+/// `make(index)` in `group`, and woven into side 0 of `weave` (the slices on side 1). What a
 /// subspace of one robot and one of a compound both do to add a line. Returns its roadmap id.
 template <class Make>
 uint32_t addJoinedLine(Roadmap& roadmap, SubspaceStats& stats, std::vector<Line>& lines,
                        const LineWorld& world, const PoseTest& free, Vec2 p, uint32_t group,
-                       const Make& make,
-                       std::initializer_list<const std::vector<uint32_t>*> slices) {
+                       const Make& make, uint32_t weave) {
   Stopwatch watch;
   lines.emplace_back(world, free, p, &stats.lineStats);
   stats.lineSeconds += watch.seconds();
@@ -69,9 +68,7 @@ uint32_t addJoinedLine(Roadmap& roadmap, SubspaceStats& stats, std::vector<Line>
   ++stats.lines;
   stats.lineArcs += lines[l].arcs().size();
   Stopwatch connect;
-  if (!lines[l].arcs().empty())
-    for (const std::vector<uint32_t>* ids : slices)
-      for (const uint32_t slice : *ids) roadmap.join(id, slice);
+  roadmap.weave(weave, 0, id);
   stats.connectSeconds += connect.seconds();
   return id;
 }
@@ -135,7 +132,8 @@ class Subspace {
   std::vector<Slice> slices_;
   std::vector<Line> lines_;
   std::vector<Slice> localSlices_;
-  std::vector<uint32_t> sliceIds_, lineIds_, localIds_;  // roadmap ids of the manifolds
+  std::vector<uint32_t> sliceIds_, lineIds_;  // roadmap ids of the manifolds
+  uint32_t weave_;                            // its lines and (local) slices, all joined
 };
 
 }  // namespace mms

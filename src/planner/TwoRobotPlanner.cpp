@@ -362,7 +362,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     for (auto& c : compounds_) addCompoundLines(*c, c->lineCount(), stop);
     return true;
   };
-  RoundsOutcome o = runRounds(h, roadmap_.graph(), size_t(from), size_t(to), stop, stats_);
+  RoundsOutcome o = runRounds(h, roadmap_, size_t(from), size_t(to), stop, stats_);
   result.certificate = o.motion.certificate;
   if (o.end == RoundsOutcome::End::Found) {
     stats_.pathCells = o.nodes.size();
