@@ -12,7 +12,7 @@ cmake --build build -j"$(nproc)" --target mms
 
 scene=scenarios/two-robots/pacman-0.5.json
 build/mms validate "$scene"
-build/mms plan "$scene" --seed 1 -o demo-path.json --svg demo.svg
+build/mms plan "$scene" --planner mms --seed 1 -o demo-path.json --svg demo.svg
 build/mms check "$scene" demo-path.json
 build/mms view "$scene" demo-path.json -o demo.html
 echo "demo: open demo.html (player: play/pause, slider, speed) or demo.svg in a browser to watch the Pacman swallow the square and the two swap places"

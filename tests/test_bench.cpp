@@ -65,6 +65,7 @@ TEST(BenchReport, SpeedupAgainstTheBestOtherPlanner) {
   };
   for (int i = 0; i < 3; ++i) {
     add("open", "mms", 0.5, "found");
+    add("open", "auto", 0.008, "found");  // ours, never the "other" even when fastest
     add("open", "rrtconnect", 0.01, "found");
     add("open", "prm", 2, "found");
     add("tight", "mms", 2, "found");
@@ -74,12 +75,17 @@ TEST(BenchReport, SpeedupAgainstTheBestOtherPlanner) {
   add("tight", "rrtconnect", 30, "found");  // one of four: the median stays past the limit
   const std::string md = speedupReport(summarize(runs));
   // Slower than RRT-Connect on the open scene: a ratio below one, against the best planner.
-  EXPECT_NE(md.find("| open | 0.5 s, 3/3 | rrtconnect: 0.01 s, 3/3 | 0.02× | 10 / 100 |"),
+  EXPECT_NE(md.find("| open | mms | 0.5 s, 3/3 | rrtconnect: 0.01 s, 3/3 | 0.02× | 10 / 100 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| open | auto | 0.008 s, 3/3 | rrtconnect: 0.01 s, 3/3 | 1.25× |"),
             std::string::npos)
       << md;
   // Nothing else reached its median: a lower bound, and RRT-Connect (one run solved) is best.
-  EXPECT_NE(md.find("| tight | 2 s, 3/3 | rrtconnect: > 60 s, 1/4 | > 30× |"), std::string::npos)
+  EXPECT_NE(md.find("| tight | mms | 2 s, 3/3 | rrtconnect: > 60 s, 1/4 | > 30× |"),
+            std::string::npos)
       << md;
+  EXPECT_EQ(md.find("| tight | auto"), std::string::npos) << md;  // auto did not run there
 }
 
 TEST(BenchReport, OmplLogIsReadByOmplBenchmarkStatistics) {

@@ -56,7 +56,7 @@ struct PlanArgs : RunArgs {
   bool svgRoadmap = false;   // draw line points and the path's slice cells
   bool saveRoadmap = false;  // keep them in the path file (for mms view)
   std::string queries;       // mms-queries/1 file: several queries on one roadmap
-  std::string planner = "mms";
+  std::string planner = mms::kDefaultPlanner;
   std::string statsJson;  // write a machine-readable summary of the run here
   PlannerParams params;   // the planner's declared parameters the user gave
 };

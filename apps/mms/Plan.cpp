@@ -60,6 +60,11 @@ void printStatistics(const PlanStatistics& s) {
                 s.manifoldsBuilt);
 }
 
+// "auto (mms)": the planner asked for, and the portfolio's member that found the path.
+std::string plannerName(const PlanArgs& a, const PlanResult& r) {
+  return r.stats.solvedBy.empty() ? a.planner : a.planner + " (" + r.stats.solvedBy + ")";
+}
+
 // Reports one query's outcome and writes its files; returns the exit code.
 int report(const PlanArgs& a, const Scene& scene, const std::string& label, const PlanResult& r,
            const std::string& output, const std::string& svg) {
@@ -105,8 +110,8 @@ int report(const PlanArgs& a, const Scene& scene, const std::string& label, cons
   std::printf(
       "%s: %s found a path in %.3f s, certified: %zu waypoints, translation %.4g, rotation %.4g "
       "rad, min clearance %.3g\n",
-      label.c_str(), a.planner.c_str(), r.stats.seconds, path.waypoints.size(), c.translation,
-      c.rotation, c.minClearance);
+      label.c_str(), plannerName(a, r).c_str(), r.stats.seconds, path.waypoints.size(),
+      c.translation, c.rotation, c.minClearance);
   printStatistics(r.stats);
   return 0;
 }

@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
                     "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
   quietFlag(planCmd, pa.quiet, "No progress messages on stderr");
   std::vector<std::string> plannerNames;
-  std::string plannerHelp = "The planner (default mms):";
+  std::string plannerHelp = std::string("The planner (default ") + mms::kDefaultPlanner + "):";
   for (const mms::PlannerInfo& p : mms::planners()) {
     plannerNames.push_back(p.name);
     plannerHelp += "\n  " + p.name + ": " + p.summary;
@@ -125,11 +125,11 @@ int main(int argc, char** argv) {
   std::map<std::string, std::string> paramText;
   std::map<std::string, bool> paramFlag;
   std::vector<std::pair<std::string, CLI::Option*>> paramOptions;
-  const size_t omplPlanners = mms::planners().size() - 1;
+  const size_t omplPlanners = mms::planners().size() - 2;  // all but auto and mms
   for (const auto& [spec, users] : declaredParams()) {
     std::string help = spec.help, list;
     for (const std::string& u : users) list += (list.empty() ? "" : ", ") + u;
-    if (users.size() == omplPlanners && users.front() != "mms") list = "every OMPL planner";
+    if (users.size() == omplPlanners && users.front() != "auto") list = "every OMPL planner";
     if (users.size() < mms::planners().size()) help += " [" + list + "]";
     CLI::Option* o =
         spec.type == mms::ParamSpec::Type::Flag

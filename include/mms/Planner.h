@@ -61,6 +61,7 @@ struct PlanStatistics {
   size_t rejectedPaths = 0;                            // candidate motions the certifier refused
   std::vector<std::pair<std::string, size_t>> counts;  // what was built, by name, in order
   std::vector<std::pair<std::string, double>> phases;  // seconds by phase, in order
+  std::string solvedBy;  // a portfolio's member whose path this is ("" otherwise)
 };
 
 enum class PlanStatus { Found, NotFound, Uncertified, Cancelled };
@@ -118,9 +119,9 @@ struct PlannerInfo {
 };
 
 /// The planner `mms plan` and programs that do not choose one use.
-inline constexpr const char* kDefaultPlanner = "mms";
+inline constexpr const char* kDefaultPlanner = "auto";
 
-/// The registry: "mms" first, then OMPL's planners.
+/// The registry: "auto" (the default) first, then "mms", then OMPL's planners.
 const std::vector<PlannerInfo>& planners();
 /// nullptr when no planner has that name.
 const PlannerInfo* findPlanner(const std::string& name);

@@ -17,16 +17,26 @@ class Termination {
   /// The cancel flag, for budgets of sub-tasks that must stop with this one.
   const std::atomic<bool>* cancelFlag() const { return cancel_; }
   bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
-  bool operator()() const { return cancelled() || Clock::now() >= deadline_; }
-  /// Seconds until the deadline (0 once passed or cancelled), for budgets of sub-tasks.
+  /// This condition, ending also when `ended` is set: for a sub-task that a sibling may end
+  /// early (the portfolio's planners, once one of them has a path). It does not count as
+  /// cancelled: cancelled() still means the caller's flag.
+  Termination endingAlsoOn(const std::atomic<bool>* ended) const {
+    Termination t = *this;
+    t.ended_ = ended;
+    return t;
+  }
+  bool operator()() const { return cancelled() || endedEarly() || Clock::now() >= deadline_; }
+  /// Seconds until the deadline (0 once passed, cancelled or ended), for budgets of sub-tasks.
   double secondsLeft() const {
-    if (cancelled()) return 0;
+    if (cancelled() || endedEarly()) return 0;
     return std::max(0.0, std::chrono::duration<double>(deadline_ - Clock::now()).count());
   }
 
  private:
+  bool endedEarly() const { return ended_ && ended_->load(std::memory_order_relaxed); }
   Clock::time_point deadline_;
   const std::atomic<bool>* cancel_;
+  const std::atomic<bool>* ended_ = nullptr;
 };
 
 /// Thrown by checkpoint() once the termination condition of the enclosing StopScope holds.

@@ -10,6 +10,10 @@ namespace mms {
 
 /// "mms": MMS for one robot (MmsPlanner) or two (TwoRobotPlanner), chosen by the scene.
 PlannerInfo mmsPlannerInfo();
+/// Whether "mms" takes the scene (one or two robots).
+bool mmsTakes(const Scene& scene);
+/// "auto": MMS and a sampling planner racing, the first certified path winning.
+PlannerInfo portfolioPlannerInfo();
 /// OMPL 1.5.2's planners with mms's collision checker and continuous certification.
 std::vector<PlannerInfo> omplPlannerInfos();
 

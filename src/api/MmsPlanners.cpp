@@ -217,6 +217,8 @@ std::unique_ptr<Planner> makeMms(const Scene& scene, const PlannerParams& params
 
 }  // namespace
 
+bool mmsTakes(const Scene& scene) { return scene.robots.size() == 1 || scene.robots.size() == 2; }
+
 PlannerInfo mmsPlannerInfo() {
   PlannerInfo info;
   info.name = "mms";

@@ -34,7 +34,7 @@ double paramValue(const PlannerParams& params, const ParamSpec& spec) {
 
 const std::vector<PlannerInfo>& planners() {
   static const std::vector<PlannerInfo> all = [] {
-    std::vector<PlannerInfo> v{mmsPlannerInfo()};
+    std::vector<PlannerInfo> v{portfolioPlannerInfo(), mmsPlannerInfo()};
     for (PlannerInfo& i : omplPlannerInfos()) v.push_back(std::move(i));
     return v;
   }();

@@ -50,7 +50,8 @@ struct Summary {
 std::vector<Summary> summarize(const std::vector<RunRecord>& runs);
 
 std::string markdownReport(const std::vector<Summary>& summaries, const std::string& heading);
-/// Per scene: MMS (the best of its configurations) against the best other planner by median,
+/// Per scene: MMS and the portfolio "auto" (each the best of its configurations) against the
+/// best other planner by median,
 /// with the speed-up (a lower bound where that planner's median is past the time limit) and
 /// how many manifolds MMS built against those its path uses.
 std::string speedupReport(const std::vector<Summary>& summaries);

@@ -1,0 +1,114 @@
+// "auto", the default planner: MMS and a sampling planner race on two cores, and the first
+// certified path wins. A user does not know in advance whether a scene is tight: where the
+// passages are wide a sampler needs a few hundred states and MMS would still be building its
+// first slices; where they are narrow MMS wins by orders of magnitude. Racing the two makes the
+// default never slower than the sampler and never much slower than MMS.
+//
+// Determinism: each member is deterministic for its seed, and the portfolio returns a member's
+// path unchanged, naming it (PlanStatistics::solvedBy); `--planner NAME` with the same seed
+// reproduces it exactly. Which member wins a close race can depend on the machine's load.
+#include <atomic>
+#include <exception>
+#include <limits>
+#include <memory>
+#include <thread>
+
+#include "api/Adapters.h"
+
+namespace mms {
+
+namespace {
+
+/// The sampler in the race: in open clutter RRT-Connect was the fastest of OMPL's planners
+/// with default parameters (docs/benchmarks.md). Its path is simplified (OMPL's shortcutting,
+/// a few milliseconds): raw, it wanders (random polygons: 8-18 rad of needless rotation).
+constexpr const char* kSampler = "rrtconnect";
+
+class Portfolio : public Planner {
+ public:
+  Portfolio(const Scene& scene, std::unique_ptr<Planner> mms, const PlannerParams& params)
+      : scene_(scene),
+        mms_(std::move(mms)),
+        samplerParams_{params.seed, {{"simplify", 1}}, false, params.exitsAfterRun} {}
+
+  PlanResult solve(const Termination& stop, const Progress& progress) override {
+    const std::unique_ptr<Planner> sampler = makePlanner(kSampler, scene_, samplerParams_);
+    if (!mms_) return named(sampler->solve(stop, progress), kSampler);  // scenes MMS cannot take
+    std::atomic<bool> ended{false};
+    const Termination race = stop.endingAlsoOn(&ended);
+    const Stopwatch clock;
+    PlanResult sampled;
+    double sampledAt = std::numeric_limits<double>::infinity();
+    std::exception_ptr failure;
+    std::thread other([&] {
+      try {
+        sampled = sampler->solve(race);
+        if (sampled.found()) {
+          sampledAt = clock.seconds();
+          ended = true;
+        }
+      } catch (...) {
+        failure = std::current_exception();
+        ended = true;
+      }
+    });
+    PlanResult own;
+    try {
+      own = mms_->solve(race, progress);
+    } catch (...) {
+      ended = true;
+      other.join();
+      throw;
+    }
+    const double ownAt = clock.seconds();
+    ended = true;
+    other.join();
+    if (failure) std::rethrow_exception(failure);
+    const bool samplerWon = sampled.found() && (!own.found() || sampledAt < ownAt);
+    PlanResult out = samplerWon ? std::move(sampled) : std::move(own);
+    if (!out.found() && stop.cancelled()) out.status = PlanStatus::Cancelled;
+    out.stats.seconds = clock.seconds();
+    return named(std::move(out), samplerWon ? kSampler : "mms");
+  }
+
+  bool setQuery(const Config& start, const Config& goal) override {
+    if (!mms_ || !mms_->setQuery(start, goal)) return false;
+    for (size_t i = 0; i < scene_.robots.size(); ++i) {
+      scene_.robots[i].start = poseOf(start, i);
+      scene_.robots[i].goal = poseOf(goal, i);
+    }
+    return true;
+  }
+
+ private:
+  static PlanResult named(PlanResult r, const char* member) {
+    if (r.found()) r.stats.solvedBy = member;
+    return r;
+  }
+
+  Scene scene_;  // the sampler is made per query, for the query's start and goal
+  std::unique_ptr<Planner> mms_;
+  PlannerParams samplerParams_;
+};
+
+}  // namespace
+
+PlannerInfo portfolioPlannerInfo() {
+  const PlannerInfo mms = mmsPlannerInfo();
+  PlannerInfo info;
+  info.name = "auto";
+  info.summary = std::string("MMS and OMPL's ") + kSampler +
+                 " race on two cores; the first certified path wins (the statistics name it). "
+                 "Scenes MMS does not take go to the sampler alone";
+  info.params = mms.params;
+  info.multiQuery = true;
+  info.make = [make = mms.make](const Scene& scene, const PlannerParams& params,
+                                const std::string& source) -> std::unique_ptr<Planner> {
+    std::unique_ptr<Planner> own;
+    if (mmsTakes(scene)) own = make(scene, params, source);
+    return std::make_unique<Portfolio>(scene, std::move(own), params);
+  };
+  return info;
+}
+
+}  // namespace mms

@@ -1,0 +1,91 @@
+// The default planner "auto": MMS and RRT-Connect race; the first certified path wins, the
+// statistics name the winner, and the winner alone with the same seed gives the same path.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "Support.h"
+#include "io/SceneIO.h"
+#include "mms/Planner.h"
+
+namespace mms {
+namespace {
+
+using test::quote;
+using test::runMms;
+
+nlohmann::json readJson(const std::string& path) {
+  return nlohmann::json::parse(test::readFile(path));
+}
+
+// Each scene is won by whichever member is faster there; either way the winner named in the
+// path file, run alone with the same seed (the sampler as the portfolio runs it, simplified),
+// returns the same waypoints.
+TEST(Portfolio, TheWinnerIsNamedAndRunAloneGivesTheSamePath) {
+  test::TempDir dir;
+  std::set<std::string> winners;
+  for (const std::string scene : {"two-robots/random-polygons.json", "one-robot/bar-slot.json",
+                                  "two-robots/pacman-0.9.json"}) {
+    const std::string file = quote(test::scenario(scene)), raced = dir.path("raced.json"),
+                      alone = dir.path("alone.json");
+    const test::Outcome r =
+        runMms("plan " + file + " -q --seed 3 --time-limit 60 -o " + quote(raced));
+    ASSERT_EQ(r.code, 0) << scene << r.err;
+    const nlohmann::json path = readJson(raced);
+    EXPECT_EQ(path["planner"], "auto");
+    const std::string winner = path["statistics"]["solved_by"];
+    ASSERT_TRUE(winner == "mms" || winner == "rrtconnect") << winner;
+    EXPECT_NE(r.out.find("auto (" + winner + ") found a path"), std::string::npos) << r.out;
+    winners.insert(winner);
+    const std::string options = winner == "rrtconnect" ? " --simplify" : "";
+    ASSERT_EQ(runMms("plan " + file + " -q --seed 3 --time-limit 60 --planner " + winner + options +
+                     " -o " + quote(alone))
+                  .code,
+              0);
+    EXPECT_EQ(path["waypoints"], readJson(alone)["waypoints"]) << scene << " won by " << winner;
+    EXPECT_EQ(runMms("check " + file + " " + quote(raced)).code, 0);
+  }
+  // Random polygons fall to RRT-Connect in milliseconds, the Pacman at 0.9 to MMS: both
+  // members win somewhere (a loaded machine could flip a close race, but not these).
+  if (!test::kSanitized) {
+    EXPECT_EQ(winners.size(), 2u);
+  }
+}
+
+// MMS takes one or two robots; with three the portfolio runs its sampler alone.
+TEST(Portfolio, ThreeRobotsGoToTheSamplerAlone) {
+  test::TempDir dir;
+  nlohmann::json scene = {{"format", "mms-scene/1"},
+                          {"name", "three-squares"},
+                          {"bounds", {-10, -10, 10, 10}},
+                          {"obstacles", nlohmann::json::array()},
+                          {"robots", nlohmann::json::array()}};
+  const nlohmann::json square = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+  for (int i = 0; i < 3; ++i)
+    scene["robots"].push_back({{"name", std::string(1, char('a' + i))},
+                               {"motion", "rigid"},
+                               {"shape", square},
+                               {"start", {-6.0, -5.0 + 5 * i, 0.0}},
+                               {"goal", {6.0, 5.0 - 5 * i, 1.0}}});
+  const std::string file = dir.file("three.json", scene.dump()), out = dir.path("p.json");
+  EXPECT_EQ(runMms("plan " + quote(file) + " -q --planner mms").code, 2);
+  const test::Outcome r = runMms("plan " + quote(file) + " -q --time-limit 30 -o " + quote(out));
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_EQ(readJson(out)["statistics"]["solved_by"], "rrtconnect");
+  EXPECT_EQ(runMms("check " + quote(file) + " " + quote(out)).code, 0);
+}
+
+// Where neither member finds a path both stop at the limit: the run ends "not found" on time.
+TEST(Portfolio, BothMembersStopAtTheLimit) {
+  const Scene scene = loadScene(test::scenario("one-robot/sealed-ring.json"));
+  const auto planner = makePlanner("auto", scene);
+  const Stopwatch clock;
+  const PlanResult r = planner->solve(Termination(1.0));
+  EXPECT_EQ(r.status, PlanStatus::NotFound);
+  EXPECT_TRUE(r.stats.solvedBy.empty());
+  EXPECT_LT(clock.seconds(), test::kSanitized ? 20.0 : 3.0);
+}
+
+}  // namespace
+}  // namespace mms
