@@ -239,7 +239,10 @@ TEST(Assembly, StuckPartsAreNamedAndBadInputRejected) {
 TEST(Assembly, ExpandShareIsAnOptionOfPlanAndIsRecorded) {
   TempDir dir;
   const std::string scene = quote(scenario("translating/cup.json")), stats = dir.path("s.json");
-  ASSERT_EQ(runMms("plan " + scene + " -q --expand-share 0 --stats-json " + quote(stats)).code, 0);
+  ASSERT_EQ(
+      runMms("plan " + scene + " -q --planner mms --expand-share 0 --stats-json " + quote(stats))
+          .code,
+      0);
   EXPECT_EQ(nlohmann::json::parse(readFile(stats))["parameters"]["expand_share"], 0.0);
   const Outcome bad = runMms("plan " + scene + " --expand-share 1.5");
   EXPECT_EQ(bad.code, 2);

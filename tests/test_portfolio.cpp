@@ -20,8 +20,7 @@ nlohmann::json readJson(const std::string& path) {
 }
 
 // Each scene is won by whichever member is faster there; either way the winner named in the
-// path file, run alone with the same seed (the sampler as the portfolio runs it, simplified),
-// returns the same waypoints.
+// path file, run alone with the same seed, returns the same waypoints.
 TEST(Portfolio, TheWinnerIsNamedAndRunAloneGivesTheSamePath) {
   test::TempDir dir;
   std::set<std::string> winners;
@@ -38,9 +37,8 @@ TEST(Portfolio, TheWinnerIsNamedAndRunAloneGivesTheSamePath) {
     ASSERT_TRUE(winner == "mms" || winner == "rrtconnect") << winner;
     EXPECT_NE(r.out.find("auto (" + winner + ") found a path"), std::string::npos) << r.out;
     winners.insert(winner);
-    const std::string options = winner == "rrtconnect" ? " --simplify" : "";
-    ASSERT_EQ(runMms("plan " + file + " -q --seed 3 --time-limit 60 --planner " + winner + options +
-                     " -o " + quote(alone))
+    ASSERT_EQ(runMms("plan " + file + " -q --seed 3 --time-limit 60 --planner " + winner + " -o " +
+                     quote(alone))
                   .code,
               0);
     EXPECT_EQ(path["waypoints"], readJson(alone)["waypoints"]) << scene << " won by " << winner;

@@ -301,7 +301,7 @@ TEST(PublicApi, PathFilesRoundTripAndCertify) {
     EXPECT_EQ(j["parameters"]["n_theta"], 16);
   } else {
     EXPECT_EQ(j["statistics"]["solved_by"], "rrtconnect");
-    EXPECT_EQ(j["parameters"]["simplify"], 1);
+    EXPECT_EQ(j["parameters"]["simplify"], 0);
   }
   EXPECT_EQ(j["statistics"]["graph_nodes"], r.stats.graphNodes);
   EXPECT_FALSE(j["statistics"].contains("seconds"));  // same seed, same file

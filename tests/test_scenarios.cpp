@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <set>
 
+#include "Support.h"
 #include "check/PathChecker.h"
 #include "geometry/CollisionChecker.h"
 #include "io/SceneIO.h"
+#include "mms/Planner.h"
 #include "scenarios/Generators.h"
 
 using namespace mms;
@@ -103,4 +107,90 @@ TEST(ScenarioNicheSwap, EverySeedIsSolvedThroughTheNiche) {
     EXPECT_LT(corridor, height);
   }
   EXPECT_NE(sceneToJson(nicheSwapScene(4)), sceneToJson(nicheSwapScene(5)));
+}
+
+// Doors: lined up with the door (angle 0) the robot slides through each wall, and turns in the
+// rooms' middles: a constructed path, certified on seeds 1-10. Across (a quarter turn) it does
+// not fit a door: it must line up.
+TEST(ScenarioDoors, EverySeedIsSolvedByLiningUpWithEachDoor) {
+  std::set<size_t> wallCounts;
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    SCOPED_TRACE(seed);
+    const Scene s = doorsScene(seed);
+    ASSERT_NO_THROW(parseScene(sceneToJson(s), "doors"));
+    const CollisionChecker checker(s);
+    const Pose start = s.robots[0].start, goal = s.robots[0].goal;
+    const double roomMiddleY = (s.bounds.ymin + s.bounds.ymax) / 2;
+    std::vector<Config> w{{start.x, start.y, start.theta}, {start.x, start.y, 0}};
+    // Obstacles come in pairs per wall: below the door, then above it.
+    ASSERT_EQ(s.obstacles.size() % 2, 0u);
+    wallCounts.insert(s.obstacles.size() / 2);
+    double x = start.x;
+    for (size_t k = 0; k < s.obstacles.size(); k += 2) {
+      double below = -INFINITY, above = INFINITY, wallRight = -INFINITY;
+      for (const Vec2 v : s.obstacles[k])
+        below = std::max(below, v.y), wallRight = std::max(wallRight, v.x);
+      for (const Vec2 v : s.obstacles[k + 1]) above = std::min(above, v.y);
+      const double doorY = (below + above) / 2;
+      const double next =
+          k + 2 < s.obstacles.size() ? (wallRight + s.obstacles[k + 2][0].x) / 2 : goal.x;
+      w.push_back({x, doorY, 0});
+      w.push_back({next, doorY, 0});
+      // Across, the robot does not fit the door.
+      EXPECT_FALSE(checker.robotFree(0, {wallRight - 0.1, doorY, M_PI / 2}));
+      x = next;
+    }
+    w.push_back({goal.x, roomMiddleY, 0});
+    w.push_back({goal.x, goal.y, goal.theta});
+    const PathCheckResult r = checkPath(s, checker, w);
+    EXPECT_TRUE(r.ok) << r.reason << " at segment " << r.segment;
+  }
+  EXPECT_EQ(wallCounts, (std::set<size_t>{1, 2, 3}));
+  EXPECT_NE(sceneToJson(doorsScene(4)), sceneToJson(doorsScene(5)));
+}
+
+// A bend: the plank cannot turn in either arm nor in the corner's square, yet a path exists
+// (found by MMS and certified by the independent path checker).
+TEST(ScenarioBend, EverySeedIsATightCornerWithAPath) {
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    SCOPED_TRACE(seed);
+    const Scene s = bendScene(seed);
+    ASSERT_NO_THROW(parseScene(sceneToJson(s), "bend"));
+    const CollisionChecker checker(s);
+    for (const Pose end : {s.robots[0].start, s.robots[0].goal}) {
+      ASSERT_TRUE(checker.robotFree(0, end));
+      bool blocked = false;  // a quarter turn in place
+      for (int i = 1; i <= 90 && !blocked; ++i)
+        blocked = !checker.robotFree(0, {end.x, end.y, end.theta + M_PI / 2 * i / 90});
+      EXPECT_TRUE(blocked);
+    }
+    const std::unique_ptr<Planner> planner = makePlanner("mms", s, {seed, {}});
+    const PlanResult r = planner->solve(Termination(test::planSeconds(30)));
+    ASSERT_EQ(r.status, PlanStatus::Found);
+    EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
+  }
+  EXPECT_NE(sceneToJson(bendScene(4)), sceneToJson(bendScene(5)));
+}
+
+// Open clutter: one or two robots, 20-30 obstacles, free starts and goals; open enough that
+// both MMS and RRT-Connect find certified paths on every seed.
+TEST(ScenarioOpenClutter, FreeEndsAndPathsOnEverySeed) {
+  std::set<size_t> robotCounts;
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    SCOPED_TRACE(seed);
+    const Scene s = openClutterScene(seed);
+    ASSERT_NO_THROW(parseScene(sceneToJson(s), "open-clutter"));
+    EXPECT_GE(s.obstacles.size(), 20u);
+    EXPECT_LE(s.obstacles.size(), 30u);
+    robotCounts.insert(s.robots.size());
+    const CollisionChecker checker(s);
+    EXPECT_TRUE(checker.isFree(startConfig(s)));
+    EXPECT_TRUE(checker.isFree(goalConfig(s)));
+    for (const char* name : {"mms", "rrtconnect"}) {
+      const PlanResult r =
+          makePlanner(name, s, {seed, {}})->solve(Termination(test::planSeconds(30)));
+      EXPECT_EQ(r.status, PlanStatus::Found) << name;
+    }
+  }
+  EXPECT_EQ(robotCounts, (std::set<size_t>{1, 2}));
 }

@@ -114,6 +114,12 @@ int scenario(const ScenarioArgs& a) {
     s = carryTurnScene(a.seed);
   else if (a.name == "niche-swap")
     s = nicheSwapScene(a.seed);
+  else if (a.name == "open-clutter")
+    s = openClutterScene(a.seed);
+  else if (a.name == "bend")
+    s = bendScene(a.seed);
+  else if (a.name == "doors")
+    s = doorsScene(a.seed);
   else
     s = randomPolygonsTwoRobots(a.seed);
   // The generators must produce valid scenes: validate before writing.

@@ -160,15 +160,18 @@ int main(int argc, char** argv) {
       "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
       "random-polygons (--seed), assembly-1 and assembly-2 (--slack), a random test scene "
       "(random: --seed, --robots, --obstacles), carry-turn (--seed: a gripper and the part it "
-      "holds turn together in a tight chamber) or niche-swap (--seed: two robots swap the ends "
-      "of a corridor with a niche)");
+      "holds turn together in a tight chamber), niche-swap (--seed: two robots swap the ends "
+      "of a corridor with a niche), open-clutter (--seed: one or two L-shaped robots cross random "
+      "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor) or doors "
+      "(--seed: a long robot lines up with the doors of 1-3 thin walls)");
   scenarioCmd
       ->add_option("NAME", sa.name,
                    "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
-                   "carry-turn or niche-swap")
+                   "carry-turn, niche-swap, open-clutter, bend or doors")
       ->required()
-      ->check(CLI::IsMember({"pacman", "viking-helmet", "random-polygons", "assembly-1",
-                             "assembly-2", "random", "carry-turn", "niche-swap"}));
+      ->check(
+          CLI::IsMember({"pacman", "viking-helmet", "random-polygons", "assembly-1", "assembly-2",
+                         "random", "carry-turn", "niche-swap", "open-clutter", "bend", "doors"}));
   outputOption(scenarioCmd, sa.output, "Scene file to write");
   scenarioCmd
       ->add_option("--tightness", sa.tightness,
@@ -176,7 +179,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.999));
   seedOption(scenarioCmd, sa.seed,
-             "random-polygons, random, carry-turn, niche-swap: the seed of the geometry");
+             "random-polygons, random and the generated families: the seed of the geometry");
   scenarioCmd->add_option("--robots", sa.robots, "random: 1 or 2 robots (default: from the seed)")
       ->check(CLI::Range(1, 2));
   scenarioCmd

@@ -27,7 +27,9 @@ class OmplAdapter : public Planner {
     out.stats.seconds = r.seconds;
     out.stats.graphNodes = r.states;
     out.stats.counts = {{"states", r.states}};
-    out.stats.phases = {{"solve", r.seconds}};
+    out.stats.phases = {{"setup", r.setupSeconds},
+                        {"solve", r.solveSeconds},
+                        {"certify", r.seconds - r.setupSeconds - r.solveSeconds}};
     out.parameters = parameters_;
     return out;
   }

@@ -34,7 +34,8 @@ nlohmann::json RunRecord::toJson() const {
           {"graph_size", graphSize},
           {"manifolds_built", manifoldsBuilt},
           {"manifolds_used", manifoldsUsed},
-          {"detail", detail}};
+          {"detail", detail},
+          {"solved_by", solvedBy}};
 }
 
 RunRecord RunRecord::fromJson(const nlohmann::json& j) {
@@ -58,6 +59,7 @@ RunRecord RunRecord::fromJson(const nlohmann::json& j) {
   r.graphSize = j.value("graph_size", size_t(0));
   r.manifoldsBuilt = j.value("manifolds_built", size_t(0));
   r.manifoldsUsed = j.value("manifolds_used", size_t(0));
+  r.solvedBy = j.value("solved_by", "");
   r.detail = j.value("detail", "");
   return r;
 }
@@ -235,12 +237,12 @@ std::string csvReport(const std::vector<RunRecord>& runs) {
   std::ostringstream csv;
   csv << "scene,tightness,planner,parameters,seed,status,seconds,wall_seconds,peak_memory_mb,"
          "translation,rotation,"
-         "graph_size\n";
+         "graph_size,solved_by\n";
   for (const RunRecord& r : runs)
     csv << r.scene << "," << r.tightness << "," << r.planner << ",\"" << r.parameters << "\","
         << r.seed << "," << r.status << "," << r.seconds << "," << r.wallSeconds << ","
-        << r.peakMemoryMb << "," << r.translation << "," << r.rotation << "," << r.graphSize
-        << "\n";
+        << r.peakMemoryMb << "," << r.translation << "," << r.rotation << "," << r.graphSize << ","
+        << r.solvedBy << "\n";
   return csv.str();
 }
 

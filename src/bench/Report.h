@@ -26,7 +26,8 @@ struct RunRecord {
   size_t graphSize = 0;  // graph nodes (mms) or planner states (OMPL)
   // mms: manifolds (slices + lines) built, and those the solution lies on (an oracle's count)
   size_t manifoldsBuilt = 0, manifoldsUsed = 0;
-  std::string detail;  // why a run failed, when known
+  std::string detail;    // why a run failed, when known
+  std::string solvedBy;  // the portfolio's member that found the path (auto), else ""
 
   bool solved() const { return status == "found"; }
   nlohmann::json toJson() const;

@@ -95,6 +95,7 @@ void fillFromStats(RunRecord& r, const std::string& statsFile) {
     r.graphSize = s.stats.graphNodes;
     r.manifoldsBuilt = s.stats.manifoldsBuilt;
     r.manifoldsUsed = s.stats.manifoldsUsed;
+    r.solvedBy = s.stats.solvedBy;
     r.detail = s.certificate.reason;
   } catch (const std::exception&) {
     r.detail = "unreadable statistics";

@@ -278,4 +278,185 @@ Scene nicheSwapScene(uint64_t seed) {
   return scene;
 }
 
+namespace {
+// The polygon's largest distance from its reference point (its circumscribed disc's radius).
+double reach(const Ring& r) {
+  double out = 0;
+  for (const Vec2 v : r) out = std::max(out, std::hypot(v.x, v.y));
+  return out;
+}
+// A convex polygon: `n` points on a circle at sorted random angles.
+Ring randomConvex(Random& rng, Vec2 c, double radius, int n) {
+  std::vector<double> a(static_cast<size_t>(n));
+  for (double& x : a) x = rng.uniform(0, 2 * M_PI);
+  std::sort(a.begin(), a.end());
+  Ring r;
+  for (const double t : a) r.push_back({c.x + radius * std::cos(t), c.y + radius * std::sin(t)});
+  return r;
+}
+double area(const Ring& r) {
+  double a = 0;
+  for (size_t i = 0; i < r.size(); ++i) {
+    const Vec2 p = r[i], q = r[(i + 1) % r.size()];
+    a += p.x * q.y - q.x * p.y;
+  }
+  return a / 2;
+}
+}  // namespace
+
+Scene openClutterScene(uint64_t seed) {
+  Random rng(seed);
+  const double half = 10;
+  Scene scene;
+  scene.name = "open-clutter-" + std::to_string(seed);
+  scene.bounds = {-half, -half, half, half};
+  const int robots = 1 + int(rng.below(2));
+  std::vector<Ring> shapes;
+  for (int i = 0; i < robots; ++i) {
+    const double arm1 = rng.uniform(1.0, 1.8), arm2 = rng.uniform(0.7, 1.4),
+                 t = rng.uniform(0.25, 0.45);
+    // An L about its corner's centre: one arm along x, one along y.
+    const double cx = arm1 / 3, cy = arm2 / 3;
+    shapes.push_back({{-cx, -cy},
+                      {arm1 - cx, -cy},
+                      {arm1 - cx, t - cy},
+                      {t - cx, t - cy},
+                      {t - cx, arm2 - cy},
+                      {-cx, arm2 - cy}});
+  }
+  // Starts and goals first (discs kept clear), then the obstacles around them.
+  struct Disc {
+    Vec2 c;
+    double r;
+  };
+  std::vector<Disc> kept;
+  auto clear = [&](Vec2 c, double r) {
+    for (const Disc& d : kept)
+      if (std::hypot(c.x - d.c.x, c.y - d.c.y) < r + d.r) return false;
+    return true;
+  };
+  auto placeOnEdge = [&](double x, double r) {
+    for (int attempt = 0; attempt < 1000; ++attempt) {
+      const Vec2 c{x, rng.uniform(-half + r + 0.5, half - r - 0.5)};
+      if (clear(c, r)) return c;
+    }
+    return Vec2{x, 0};
+  };
+  for (int i = 0; i < robots; ++i) {
+    Robot robot;
+    robot.name = robots == 1 ? "robot" : std::string(1, char('a' + i));
+    robot.shape = shapes[size_t(i)];
+    const double r = reach(robot.shape) + 0.05, edge = half - r - 0.3;
+    const Vec2 s = placeOnEdge(i == 0 ? -edge : edge, r);
+    kept.push_back({s, r});
+    const Vec2 g = placeOnEdge(i == 0 ? edge : -edge, r);
+    kept.push_back({g, r});
+    robot.start = {s.x, s.y, rng.uniform(-M_PI, M_PI)};
+    robot.goal = {g.x, g.y, rng.uniform(-M_PI, M_PI)};
+    scene.robots.push_back(robot);
+  }
+  const int count = 20 + int(rng.below(11));
+  for (int k = 0, attempts = 0; k < count && attempts < 10000; ++attempts) {
+    const double radius = rng.uniform(0.6, 1.6);
+    const Vec2 c{rng.uniform(-half + radius, half - radius),
+                 rng.uniform(-half + radius, half - radius)};
+    if (!clear(c, radius)) continue;
+    scene.obstacles.push_back(randomConvex(rng, c, radius, 3 + int(rng.below(5))));
+    if (std::abs(area(scene.obstacles.back())) < 0.05 * radius * radius)
+      scene.obstacles.pop_back();  // a sliver: draw again
+    else
+      ++k;
+  }
+  return scene;
+}
+
+Scene bendScene(uint64_t seed) {
+  Random rng(seed);
+  const double w1 = rng.uniform(1.0, 1.6), w2 = rng.uniform(1.0, 1.6);
+  const double thick = rng.uniform(0.08, 0.2);
+  // The longest segment that turns from a corridor of width a into one of width b.
+  auto ladder = [](double a, double b) {
+    return std::pow(std::pow(a, 2.0 / 3) + std::pow(b, 2.0 / 3), 1.5);
+  };
+  const double length = rng.uniform(0.8, 0.95) * ladder(w1 - thick, w2 - thick);
+  const double arm1 = length + rng.uniform(2, 5), arm2 = length + rng.uniform(2, 5);
+  const double wall = 1;
+  // Arm 1 runs along x from x = -arm1 to the corner [0, w2] x [0, w1]; arm 2 up along y.
+  const double x0 = -arm1, x1 = w2, y0 = 0, y1 = w1 + arm2;
+  Scene scene;
+  scene.name = "bend-" + std::to_string(seed);
+  scene.obstacles = {rect(x0 - wall, y0 - wall, x1 + wall, y0),  // floor of arm 1
+                     rect(x1, y0, x1 + wall, y1),                // outer wall of arm 2
+                     rect(x0 - wall, w1, 0, y1)};                // the inner block
+  scene.bounds = {x0 - wall, y0 - wall, x1 + wall, y1};
+  const double h = length / 2, t = thick / 2;
+  Robot plank;
+  plank.name = "plank";
+  plank.shape = {{-h, -t}, {h, -t}, {h, t}, {-h, t}};
+  plank.start = {x0 + h + 0.2, w1 / 2, 0};
+  plank.goal = {w2 / 2, y1 - h - 0.2, M_PI / 2};
+  // Which way it turns (mirror in y = x swaps the arms' roles) and a quarter turn of the whole.
+  const bool mirror = rng.below(2) == 1;
+  const double quarter = double(rng.below(4)) * M_PI / 2;
+  auto place = [&](Vec2 v) { return turned(mirror ? Vec2{v.y, v.x} : v, quarter); };
+  for (Ring& o : scene.obstacles) {
+    for (Vec2& v : o) v = place(v);
+    o = counterClockwise(o);
+  }
+  auto placePose = [&](Pose p) {
+    const Vec2 v = place({p.x, p.y});
+    const double theta = (mirror ? M_PI / 2 - p.theta : p.theta) + quarter;
+    return Pose{v.x, v.y, std::remainder(theta, 2 * M_PI)};
+  };
+  plank.start = placePose(plank.start);
+  plank.goal = placePose(plank.goal);
+  const Vec2 a = place({scene.bounds.xmin, scene.bounds.ymin}),
+             b = place({scene.bounds.xmax, scene.bounds.ymax});
+  scene.bounds = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+  scene.robots = {plank};
+  return scene;
+}
+
+Scene doorsScene(uint64_t seed) {
+  Random rng(seed);
+  // A long robot: a length x width rectangle with its corners cut at random.
+  const double length = rng.uniform(1.5, 2.5), width = rng.uniform(0.3, 0.6);
+  const double h = length / 2, t = width / 2;
+  Ring shape;
+  for (const Vec2 corner : {Vec2{-h, -t}, Vec2{h, -t}, Vec2{h, t}, Vec2{-h, t}}) {
+    const double cut = rng.uniform(0, 0.4) * t;
+    const Vec2 along{corner.x > 0 ? -1.0 : 1.0, 0}, across{0, corner.y > 0 ? -1.0 : 1.0};
+    // Counter-clockwise: the vertex before the corner first.
+    const bool xFirst = (corner.x > 0) == (corner.y > 0);
+    const Vec2 a = corner + cut * (xFirst ? across : along),
+               b = corner + cut * (xFirst ? along : across);
+    if (cut < 0.01) {
+      shape.push_back(corner);
+    } else {
+      shape.push_back(a);
+      shape.push_back(b);
+    }
+  }
+  const int walls = 1 + int(rng.below(3));
+  const double room = length + rng.uniform(0.8, 1.5), thickness = 0.2;
+  const double height = length + rng.uniform(1, 2.5), widthAll = walls * (room + thickness) + room;
+  Scene scene;
+  scene.name = "doors-" + std::to_string(seed);
+  scene.bounds = {0, 0, widthAll, height};
+  for (int k = 1; k <= walls; ++k) {
+    const double x = k * room + (k - 1) * thickness;
+    const double door = width * rng.uniform(1.05, 1.3);  // shorter than the robot is long
+    const double y = rng.uniform(0.2, height - door - 0.2);
+    scene.obstacles.push_back(rect(x, 0, x + thickness, y));
+    scene.obstacles.push_back(rect(x, y + door, x + thickness, height));
+  }
+  Robot robot;
+  robot.name = "bar";
+  robot.shape = counterClockwise(shape);
+  robot.start = {room / 2, height / 2, rng.uniform(-M_PI, M_PI)};
+  robot.goal = {widthAll - room / 2, height / 2, rng.uniform(-M_PI, M_PI)};
+  scene.robots = {robot};
+  return scene;
+}
+
 }  // namespace mms

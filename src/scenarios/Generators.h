@@ -48,6 +48,25 @@ Scene carryTurnScene(uint64_t seed);
 /// left end.
 Scene nicheSwapScene(uint64_t seed);
 
+/// Open clutter: one or two L-shaped robots (count, arm lengths and thickness from the seed)
+/// cross a square room among 20-30 random convex obstacles (3-7 vertices, placed uniformly,
+/// overlaps allowed). Robot 0 goes from the left edge to the right, robot 1 the other way;
+/// starts and goals keep the robots' circumscribed discs clear of every obstacle's and of each
+/// other's, so they are free. Wide passages: what sampling planners do well.
+Scene openClutterScene(uint64_t seed);
+
+/// A bend: a plank (a thin rectangle) goes from one arm of an L-shaped corridor to the other.
+/// Random per seed: the arms' widths and lengths, the plank's thickness and its length, 0.8-0.95
+/// of the longest that turns the corner (the ladder problem, with its thickness taken off the
+/// widths), which way the corridor turns, and a quarter turn of the whole.
+Scene bendScene(uint64_t seed);
+
+/// Doors: a long robot (a rectangle with random corners cut) crosses rooms divided by 1-3 thin
+/// walls, each with a door 5-30 % wider than the robot, so it must line up with each door to
+/// pass. Random per seed: the robot's length, width and corners, the rooms' size, the walls'
+/// count, each door's height and slack, the start and goal angles.
+Scene doorsScene(uint64_t seed);
+
 /// The paper's Pacman scenario: a C-shaped robot and a square swap ends of a corridor too
 /// narrow to pass; the Pacman must swallow the square, turn around it and release it.
 /// tightness in [0, 1): the square grows from the base size (0) towards exactly the width of
