@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# The generalization suite of docs/benchmarks.md: fresh random instances of every generated
+# scene family (`mms scenario NAME --seed K`), the default planner (auto), MMS alone and OMPL's
+# PRM, PRM + bridge, RRT-Connect and KPIECE1 with default parameters, in one `mms bench` run.
+# Tune on the tuning seeds (1-10), report on the fresh ones (100-119), which nobody looked at
+# while tuning.
+# Usage: scripts/bench-generalization.sh tuning|fresh [OUTPUT_DIR] (default bench-generalization-SET)
+# Environment: LIMIT (seconds per run, default 10), JOBS (cores to fill, default 2; an auto run
+# takes both), FAMILIES (default: all below), PLANNERS (default: the six above).
+# It writes OUTPUT_DIR/summary.md: per family and planner, the median over seeds (a failure
+# counts as the limit) and the seeds solved, and the ratios of the best OMPL planner's median to
+# auto's and to MMS's (above 1: ours is faster). The OMPL planners use their whole limit on the
+# tight families: about 25 min for the fresh set at the default limit. It resumes where it stopped.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+set_name=${1:-}
+case "$set_name" in
+  tuning) seeds=$(seq 1 10) ;;
+  fresh) seeds=$(seq 100 119) ;;
+  *) echo "usage: scripts/bench-generalization.sh tuning|fresh [OUTPUT_DIR]" >&2; exit 2 ;;
+esac
+out=${2:-bench-generalization-$set_name}
+limit=${LIMIT:-10}
+jobs=${JOBS:-2}
+families=${FAMILIES:-carry-turn niche-swap open-clutter bend doors}
+planners=${PLANNERS:-auto,mms,prm,prm-bridge,rrtconnect,kpiece}
+
+if [[ ! -x build/mms ]]; then
+  bash scripts/setup.sh
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build -j"$(nproc)" --target mms
+fi
+mkdir -p "$out/scenes"
+scenes=()
+for f in $families; do
+  for k in $seeds; do
+    build/mms scenario "$f" --seed "$k" -o "$out/scenes/$f-$k.json" >/dev/null
+    scenes+=("$out/scenes/$f-$k.json")
+  done
+done
+build/mms bench "${scenes[@]}" --planners "$planners" --runs 1 --time-limit "$limit" \
+  --jobs "$jobs" -o "$out/bench"
+python3 scripts/generalization-summary.py "$out/bench/results.csv" "$limit" > "$out/summary.md"
+{ echo; echo "Seeds: $set_name ($(echo $seeds | awk '{print $1"-"$NF}')), limit $limit s, $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"; } >> "$out/summary.md"
+cat "$out/summary.md"
