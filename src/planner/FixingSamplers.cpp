@@ -18,7 +18,22 @@ bool MixedFixings::grow(size_t robot, FixingHost& host, const Termination& stop)
       if (frontier_.grow(robot, host, stop)) return true;
     }
   }
+  if (host.rng().uniform() < cornerShare_ && corners_.grow(robot, host, stop)) return true;
   return uniform_.grow(robot, host, stop);
+}
+
+bool CornerFixings::grow(size_t robot, FixingHost& host, const Termination& stop) {
+  const std::vector<Slice>& base = host.baseSlices(robot);
+  Random& rng = host.rng();
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    const size_t k = rng.below(base.size());
+    if (base[k].fscCount() == 0) continue;
+    const auto p = samplePointNearVertex(base[k], rng.below(base[k].fscCount()), rng);
+    if (!p) continue;
+    host.hold(host.fixingAt(robot, k, *p, -1), stop);
+    return true;
+  }
+  return false;
 }
 
 bool UniformFixings::grow(size_t robot, FixingHost& host, const Termination& stop) {

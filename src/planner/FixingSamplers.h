@@ -79,6 +79,15 @@ class UniformFixings final : public FixingSampler {
   bool grow(size_t robot, FixingHost& host, const Termination& stop) override;
 };
 
+/// A free pose near a vertex of a cell of the robot's slice among the obstacles (slice and cell
+/// uniform, then a vertex): a robot tucked into a corner, out of the other's way (waiting in a
+/// niche, pressed into a pocket). Such poses are a sliver of the free space by area, so
+/// UniformFixings almost never draws them.
+class CornerFixings final : public FixingSampler {
+ public:
+  bool grow(size_t robot, FixingHost& host, const Termination& stop) override;
+};
+
 /// One fixing in a reached cell: the smaller of two drawn uniformly, half of the points near
 /// the cell's vertices.
 class FrontierFixings final : public FixingSampler {
@@ -99,16 +108,21 @@ class ConnectChains final : public FixingSampler {
 
 /// The two-robot planner's policy: for a translating robot, once start and goal are known, a
 /// share `expandShare` grows from reached cells (of those a share `connectShare` as chains, the
-/// rest frontier fixings); everything else, and whatever they fail to grow, uniform.
+/// rest frontier fixings); everything else, and whatever they fail to grow, a share
+/// `cornerShare` in corners, the rest uniform.
 class MixedFixings final : public FixingSampler {
  public:
-  MixedFixings(double expandShare, double connectShare, size_t connectSteps)
-      : expandShare_(expandShare), connectShare_(connectShare), chains_(connectSteps) {}
+  MixedFixings(double expandShare, double connectShare, size_t connectSteps, double cornerShare)
+      : expandShare_(expandShare),
+        connectShare_(connectShare),
+        cornerShare_(cornerShare),
+        chains_(connectSteps) {}
   bool grow(size_t robot, FixingHost& host, const Termination& stop) override;
 
  private:
-  double expandShare_, connectShare_;
+  double expandShare_, connectShare_, cornerShare_;
   UniformFixings uniform_;
+  CornerFixings corners_;
   FrontierFixings frontier_;
   ConnectChains chains_;
 };

@@ -25,7 +25,7 @@ TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
       contactScene_(withContactShapes(scene_, checker_)),
       rng_(settings.seed),
       sampler_(std::make_unique<MixedFixings>(settings.expandShare, settings.connectShare,
-                                              settings.connectSteps)) {
+                                              settings.connectSteps, settings.cornerShare)) {
   for (size_t r = 0; r < 2; ++r) {
     translates_[r] = scene_.robots[r].motion == Motion::Translate;
     worlds_[r] = std::make_unique<SliceWorld>(contactScene_, r);

@@ -48,6 +48,9 @@ struct TwoRobotSettings {
   // slow the second down when they are the majority.
   double connectShare = 0.25;
   size_t connectSteps = 200;  // at most this many fixings per chain
+  // Share of the other fixings drawn near a vertex of the robot's free space among the
+  // obstacles (a robot tucked into a corner, out of the other's way); the rest uniform.
+  double cornerShare = 0.5;
   // A new subspace is tested for meeting points against at most this many subspaces of the
   // other family: those whose held poses are nearest, plus a random sample of the rest.
   size_t crossNearest = 256, crossRandom = 256;
