@@ -31,25 +31,37 @@ Vec2 uniformPoint(const Box& b, Random& rng) {
   return {rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax)};
 }
 
+// One robot among clutter: slices at random angles and lines at random points of one frame.
+struct OneFrame {
+  OneFrame(uint64_t sceneSeed, int sliceCount, int lineCount, uint64_t seed)
+      : scene(clutter(sceneSeed)), checker(scene), sliceWorld(scene, 0), lineWorld(scene, 0) {
+    Random rng(seed);
+    for (int k = 0; k < sliceCount; ++k)
+      slices.emplace_back(sliceWorld, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
+    for (int l = 0; l < lineCount; ++l)
+      lines.emplace_back(
+          lineWorld, [&](const Pose& q) { return checker.robotFree(0, q); },
+          uniformPoint(scene.bounds, rng));
+  }
+  Scene scene;
+  CollisionChecker checker;
+  SliceWorld sliceWorld;
+  LineWorld lineWorld;
+  HeldFrame frame{0, 1, 0, {}};
+  std::vector<Slice> slices;
+  std::vector<Line> lines;
+};
+
 }  // namespace
 
 // In one frame a slice and a line meet at (line point, slice angle); the cells that hold it
 // are free there by the collision checker, and the roadmap joins exactly those.
 TEST(ManifoldSeam, SliceAndLineOfOneFrameMeetAtLinePointAndSliceAngle) {
-  const Scene scene = clutter(3);
-  const CollisionChecker checker(scene);
-  const SliceWorld sliceWorld(scene, 0);
-  const LineWorld lineWorld(scene, 0);
-  const HeldFrame frame{0, 1, 0, {}};
-  std::vector<Slice> slices;
-  std::vector<Line> lines;
-  Random rng(7);
-  for (int k = 0; k < 4; ++k)
-    slices.emplace_back(sliceWorld, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
-  for (int l = 0; l < 60; ++l)
-    lines.emplace_back(
-        lineWorld, [&](const Pose& q) { return checker.robotFree(0, q); },
-        uniformPoint(scene.bounds, rng));
+  const OneFrame f(3, 4, 60, 7);
+  const CollisionChecker& checker = f.checker;
+  const HeldFrame& frame = f.frame;
+  const std::vector<Slice>& slices = f.slices;
+  const std::vector<Line>& lines = f.lines;
   Roadmap roadmap;
   std::vector<uint32_t> sliceIds, lineIds;
   for (size_t k = 0; k < slices.size(); ++k)
@@ -83,20 +95,11 @@ TEST(ManifoldSeam, SliceAndLineOfOneFrameMeetAtLinePointAndSliceAngle) {
 // A weave stores no edge, yet decides connectivity and finds fewest-cells paths exactly as
 // the same joins stored one by one (the reference: join() of every line-slice pair).
 TEST(ManifoldSeam, AWeaveConnectsAndSearchesAsStoredEdgesDo) {
-  const Scene scene = clutter(4);
-  const CollisionChecker checker(scene);
-  const SliceWorld sliceWorld(scene, 0);
-  const LineWorld lineWorld(scene, 0);
-  const HeldFrame frame{0, 1, 0, {}};
-  std::vector<Slice> slices;
-  std::vector<Line> lines;
+  const OneFrame f(4, 6, 80, 11);
+  const HeldFrame& frame = f.frame;
+  const std::vector<Slice>& slices = f.slices;
+  const std::vector<Line>& lines = f.lines;
   Random rng(11);
-  for (int k = 0; k < 6; ++k)
-    slices.emplace_back(sliceWorld, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
-  for (int l = 0; l < 80; ++l)
-    lines.emplace_back(
-        lineWorld, [&](const Pose& q) { return checker.robotFree(0, q); },
-        uniformPoint(scene.bounds, rng));
   Roadmap stored, woven;
   const uint32_t w = woven.addWeave();
   std::vector<uint32_t> sliceIds, lineIds;

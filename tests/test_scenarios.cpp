@@ -149,7 +149,7 @@ TEST(ScenarioDoors, EverySeedIsSolvedByLiningUpWithEachDoor) {
   EXPECT_NE(sceneToJson(doorsScene(4)), sceneToJson(doorsScene(5)));
 }
 
-// A bend: the plank cannot turn in either arm nor in the corner's square, yet a path exists
+// A bend: the plank cannot turn a quarter in place where it starts or ends, yet a path exists
 // (found by MMS and certified by the independent path checker).
 TEST(ScenarioBend, EverySeedIsATightCornerWithAPath) {
   for (uint64_t seed = 1; seed <= 10; ++seed) {
