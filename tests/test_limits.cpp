@@ -111,3 +111,24 @@ TEST(Limits, AFullRunOnAnUnsolvableSceneStaysUnderAGigabyte) {
 
 }  // namespace
 }  // namespace mms
+
+namespace mms {
+namespace {
+
+// The default planner runs a second thread; where memory runs out there, the run still ends
+// with the one-line message and exit 3 (glibc once aborted: the library a second thread's
+// unwinding needs could no longer be loaded).
+TEST(Limits, ThePortfolioRunsOutOfMemoryCleanly) {
+  if (test::kSanitized) return;  // the sanitizers reserve terabytes: no cap on address space
+  test::TempDir dir;
+  const std::string out = dir.path("path.json");
+  const test::Outcome r =
+      test::runMms("plan " + test::quote(test::scenario("one-robot/sealed-ring.json")) +
+                   " --memory-limit 80 --time-limit 60 -q -o " + test::quote(out));
+  EXPECT_EQ(r.code, 3) << r.out << r.err;
+  EXPECT_EQ(r.err, "mms: out of memory (see --memory-limit); no output written\n");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace mms

@@ -7,6 +7,7 @@
 // Determinism: each member is deterministic for its seed, and the portfolio returns a member's
 // path unchanged, naming it (PlanStatistics::solvedBy); `--planner NAME` with the same seed
 // reproduces it exactly. Which member wins a close race can depend on the machine's load.
+#include <execinfo.h>
 #include <malloc.h>
 
 #include <atomic>
@@ -39,12 +40,18 @@ constexpr std::chrono::milliseconds kHeadStart{5};
 /// takes the process's memory-map lock, which the sampler's page faults need too: on the bends
 /// (seeds 1-10) RRT-Connect took 1.7x as long beside MMS in the same process as alone, and
 /// 1.03x with blocks up to 32 MB kept in the heap and 64 MB of free top kept. Set once for the
-/// process: what the portfolio costs a program that embeds it is that memory kept.
-void keepLargeBlocksInTheHeap() {
+/// process: what the portfolio costs a program that embeds it is that memory kept. Also once:
+/// what a second thread needs loaded before memory runs out (below).
+void prepareTheProcess() {
   static std::once_flag once;
   std::call_once(once, [] {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 64 << 20);
+    // glibc loads libgcc_s, which a second thread's unwinding needs, on first use; at the
+    // memory limit that load fails and glibc aborts ("libgcc_s.so.1 must be installed for
+    // unwinding to work"). backtrace() loads it now, while there is room.
+    void* frame = nullptr;
+    backtrace(&frame, 1);
   });
 }
 
@@ -58,7 +65,7 @@ class Portfolio : public Planner {
   PlanResult solve(const Termination& stop, const Progress& progress) override {
     const std::unique_ptr<Planner> sampler = makePlanner(kSampler, scene_, samplerParams_);
     if (!mms_) return named(sampler->solve(stop, progress), kSampler);  // scenes MMS cannot take
-    keepLargeBlocksInTheHeap();
+    prepareTheProcess();
     std::atomic<bool> ended{false};
     bool samplerFinished = false;  // guarded by mutex
     std::mutex mutex;
