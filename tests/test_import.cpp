@@ -311,7 +311,7 @@ TEST(View, SavedRoadmapReachesThePathFileAndThePage) {
   TempDir dir;
   const std::string scene = test::scenario("one-robot/bar-slot.json");
   const std::string path = dir.path("p.json"), html = dir.path("v.html");
-  auto plan = runMms("plan " + quote(scene) + " -q --save-roadmap -o " + quote(path));
+  auto plan = runMms("plan " + quote(scene) + " --planner mms -q --save-roadmap -o " + quote(path));
   ASSERT_EQ(plan.code, 0) << plan.err;
   const nlohmann::json saved = nlohmann::json::parse(test::readFile(path));
   ASSERT_TRUE(saved.contains("roadmap"));

@@ -275,7 +275,9 @@ TEST(Registry, PlanOptionsComeFromTheDeclarations) {
     for (const ParamSpec& s : p.params)
       EXPECT_NE(help.out.find("--" + s.name), std::string::npos) << s.name;
   const std::string stats = dir.path("s.json");
-  ASSERT_EQ(runMms("plan " + scene + " -q --n-lines 64 --stats-json " + quote(stats)).code, 0);
+  ASSERT_EQ(
+      runMms("plan " + scene + " --planner mms -q --n-lines 64 --stats-json " + quote(stats)).code,
+      0);
   const RunSummary s = runSummaryFromJson(nlohmann::json::parse(readFile(stats)));
   EXPECT_EQ(s.status, PlanStatus::Found);
   EXPECT_EQ(s.parameters.at("n_lines"), 64);
