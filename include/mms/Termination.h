@@ -10,6 +10,16 @@ namespace mms {
 class Termination {
  public:
   using Clock = std::chrono::steady_clock;
+  /// Told of every check of a condition that carries it: work that should begin only if the
+  /// computation checking runs long (the portfolio's MMS) begins from there.
+  struct Watcher {
+    /// `now`: the time the check read (one clock read per check, which a sampler makes per
+    /// iteration).
+    virtual void onCheck(Clock::time_point now) = 0;
+
+   protected:
+    ~Watcher() = default;
+  };
   explicit Termination(double seconds, const std::atomic<bool>* cancel = nullptr)
       : deadline_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                      std::chrono::duration<double>(seconds))),
@@ -25,7 +35,18 @@ class Termination {
     t.ended_ = ended;
     return t;
   }
-  bool operator()() const { return cancelled() || endedEarly() || Clock::now() >= deadline_; }
+  /// This condition, telling `watcher` of each check.
+  Termination watchedBy(Watcher* watcher) const {
+    Termination t = *this;
+    t.watcher_ = watcher;
+    return t;
+  }
+  bool operator()() const {
+    if (cancelled() || endedEarly()) return true;
+    const Clock::time_point now = Clock::now();
+    if (watcher_) watcher_->onCheck(now);
+    return now >= deadline_;
+  }
   /// Seconds until the deadline (0 once passed, cancelled or ended), for budgets of sub-tasks.
   double secondsLeft() const {
     if (cancelled() || endedEarly()) return 0;
@@ -37,6 +58,7 @@ class Termination {
   Clock::time_point deadline_;
   const std::atomic<bool>* cancel_;
   const std::atomic<bool>* ended_ = nullptr;
+  Watcher* watcher_ = nullptr;
 };
 
 /// Thrown by checkpoint() once the termination condition of the enclosing StopScope holds.

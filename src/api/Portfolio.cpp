@@ -12,11 +12,12 @@
 
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 #include "api/Adapters.h"
@@ -55,65 +56,107 @@ void prepareTheProcess() {
   });
 }
 
+/// MMS's side of the race. It begins only once the sampler has run for the head start: the
+/// sampler tells it of each check of its termination condition, and the first check past the
+/// head start makes MMS and starts it on a thread of its own. On open scenes the sampler is done
+/// before that, and there is neither MMS nor a second thread: MMS's construction (exact
+/// obstacles, arrangements) beside a 2 ms sampler slowed it by 5-8 % on the bends (seeds 1-10,
+/// median per scene), and a process with a second thread pays for atomic reference counts and
+/// locked allocation in every shared pointer and malloc of the sampler.
+class Challenger final : public Termination::Watcher {
+ public:
+  using Maker = std::function<std::unique_ptr<Planner>()>;
+  /// `mms`: the MMS planner of earlier queries, or null (`make` makes it when it starts).
+  Challenger(std::unique_ptr<Planner>& mms, const Maker& make, const Termination& stop,
+             const Planner::Progress& progress, const Stopwatch& clock)
+      : mms_(mms),
+        make_(make),
+        progress_(progress),
+        clock_(clock),
+        race_(stop.endingAlsoOn(&ended_)),
+        headStartEnds_(Termination::Clock::now() + kHeadStart) {}
+  ~Challenger() { end(); }
+  Challenger(const Challenger&) = delete;
+  Challenger& operator=(const Challenger&) = delete;
+
+  /// The race's condition: the caller's, ending also once either member has finished.
+  const Termination& race() const { return race_; }
+  void onCheck(Termination::Clock::time_point now) override {
+    if (started_.load(std::memory_order_relaxed) || now < headStartEnds_) return;
+    if (started_.exchange(true)) return;
+    try {
+      thread_ = std::thread([this] { run(); });
+    } catch (const std::system_error&) {  // no room for a thread's stack: the memory limit
+      failure_ = std::make_exception_ptr(std::bad_alloc());
+      ended_ = true;
+    }
+  }
+  /// MMS on the calling thread, for the time left, if it has not started: the sampler gave up
+  /// before the head start was over.
+  void runHere() {
+    if (!started_.exchange(true)) run();
+  }
+  /// Ends the race and waits for MMS; rethrows what it threw.
+  void end() {
+    ended_ = true;
+    if (thread_.joinable()) thread_.join();
+  }
+  void rethrow() const {
+    if (failure_) std::rethrow_exception(failure_);
+  }
+  PlanResult& result() { return own_; }
+  double foundAt() const { return ownAt_; }
+
+ private:
+  void run() {
+    try {
+      if (!mms_ && !race_()) mms_ = make_();
+      if (!race_()) {
+        own_ = mms_->solve(race_, progress_);
+        if (own_.found()) ownAt_ = clock_.seconds();
+      }
+    } catch (...) {
+      failure_ = std::current_exception();
+    }
+    ended_ = true;
+  }
+
+  std::unique_ptr<Planner>& mms_;
+  const Maker& make_;
+  const Planner::Progress& progress_;
+  const Stopwatch& clock_;
+  std::atomic<bool> ended_{false};
+  std::atomic<bool> started_{false};
+  const Termination race_;
+  const Termination::Clock::time_point headStartEnds_;
+  std::thread thread_;
+  PlanResult own_;
+  double ownAt_ = std::numeric_limits<double>::infinity();
+  std::exception_ptr failure_;
+};
+
 class Portfolio : public Planner {
  public:
-  Portfolio(const Scene& scene, std::unique_ptr<Planner> mms, const PlannerParams& params)
+  /// `makeMms`: null for scenes MMS does not take.
+  Portfolio(const Scene& scene, Challenger::Maker makeMms, const PlannerParams& params)
       : scene_(scene),
-        mms_(std::move(mms)),
+        makeMms_(std::move(makeMms)),
         samplerParams_{params.seed, {}, false, params.exitsAfterRun} {}
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
     const std::unique_ptr<Planner> sampler = makePlanner(kSampler, scene_, samplerParams_);
-    if (!mms_) return named(sampler->solve(stop, progress), kSampler);  // scenes MMS cannot take
+    if (!makeMms_) return named(sampler->solve(stop, progress), kSampler);
     prepareTheProcess();
-    std::atomic<bool> ended{false};
-    bool samplerFinished = false;  // guarded by mutex
-    std::mutex mutex;
-    std::condition_variable samplerDone;
-    const Termination race = stop.endingAlsoOn(&ended);
     const Stopwatch clock;
-    PlanResult sampled, own;
-    double sampledAt = std::numeric_limits<double>::infinity(), ownAt = sampledAt;
-    std::exception_ptr failure;
-    // MMS on the new thread, the sampler on this one: the sampler, done in a millisecond or two
-    // on open scenes, starts at once where the memory is warm (open clutter and bends, seeds
-    // 1-10: 3 % faster per scene, median, than the other way round).
-    std::thread other([&] {
-      try {
-        // The sampler's head start: on open scenes it is done within it, and MMS, which checks
-        // the limit only between exact steps of a millisecond or more, would only delay it.
-        std::unique_lock<std::mutex> lock(mutex);
-        samplerDone.wait_for(lock, kHeadStart, [&] { return samplerFinished; });
-        lock.unlock();
-        if (ended) return;
-        own = mms_->solve(race, progress);
-        ownAt = clock.seconds();
-      } catch (...) {
-        failure = std::current_exception();
-      }
-      ended = true;
-    });
-    auto finishSampler = [&] {
-      const std::lock_guard<std::mutex> lock(mutex);
-      samplerFinished = true;
-      samplerDone.notify_one();
-    };
-    try {
-      sampled = sampler->solve(race);
-    } catch (...) {
-      ended = true;
-      finishSampler();
-      other.join();
-      throw;
-    }
-    if (sampled.found()) {
-      sampledAt = clock.seconds();
-      ended = true;
-    }
-    finishSampler();
-    other.join();
-    if (failure) std::rethrow_exception(failure);
-    const bool samplerWon = sampled.found() && (!own.found() || sampledAt < ownAt);
+    // The sampler on this thread, where the memory is warm; MMS joins it after the head start.
+    Challenger challenger(mms_, makeMms_, stop, progress, clock);
+    PlanResult sampled = sampler->solve(challenger.race().watchedBy(&challenger));
+    const double sampledAt = clock.seconds();
+    if (!sampled.found()) challenger.runHere();
+    challenger.end();
+    challenger.rethrow();
+    PlanResult& own = challenger.result();
+    const bool samplerWon = sampled.found() && (!own.found() || sampledAt < challenger.foundAt());
     PlanResult out = samplerWon ? std::move(sampled) : std::move(own);
     if (!out.found() && stop.cancelled()) out.status = PlanStatus::Cancelled;
     out.stats.seconds = clock.seconds();
@@ -121,7 +164,9 @@ class Portfolio : public Planner {
   }
 
   bool setQuery(const Config& start, const Config& goal) override {
-    if (!mms_ || !mms_->setQuery(start, goal)) return false;
+    if (!makeMms_) return false;
+    if (!mms_) mms_ = makeMms_();  // multi-query: MMS's roadmap serves the next queries too
+    if (!mms_->setQuery(start, goal)) return false;
     for (size_t i = 0; i < scene_.robots.size(); ++i) {
       scene_.robots[i].start = poseOf(start, i);
       scene_.robots[i].goal = poseOf(goal, i);
@@ -136,6 +181,7 @@ class Portfolio : public Planner {
   }
 
   Scene scene_;  // the sampler is made per query, for the query's start and goal
+  Challenger::Maker makeMms_;
   std::unique_ptr<Planner> mms_;
   PlannerParams samplerParams_;
 };
@@ -153,9 +199,10 @@ PlannerInfo portfolioPlannerInfo() {
   info.multiQuery = true;
   info.make = [make = mms.make](const Scene& scene, const PlannerParams& params,
                                 const std::string& source) -> std::unique_ptr<Planner> {
-    std::unique_ptr<Planner> own;
-    if (mmsTakes(scene)) own = make(scene, params, source);
-    return std::make_unique<Portfolio>(scene, std::move(own), params);
+    Challenger::Maker makeMms;
+    if (mmsTakes(scene))
+      makeMms = [make, scene, params, source] { return make(scene, params, source); };
+    return std::make_unique<Portfolio>(scene, std::move(makeMms), params);
   };
   return info;
 }
