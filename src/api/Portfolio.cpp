@@ -84,6 +84,7 @@ class Challenger final : public Termination::Watcher {
   void onCheck(Termination::Clock::time_point now) override {
     if (started_.load(std::memory_order_relaxed) || now < headStartEnds_) return;
     if (started_.exchange(true)) return;
+    prepareTheProcess();  // not before: a sampler done within the head start runs as alone
     try {
       thread_ = std::thread([this] { run(); });
     } catch (const std::system_error&) {  // no room for a thread's stack: the memory limit
@@ -94,7 +95,9 @@ class Challenger final : public Termination::Watcher {
   /// MMS on the calling thread, for the time left, if it has not started: the sampler gave up
   /// before the head start was over.
   void runHere() {
-    if (!started_.exchange(true)) run();
+    if (started_.exchange(true)) return;
+    prepareTheProcess();
+    run();
   }
   /// Ends the race and waits for MMS; rethrows what it threw.
   void end() {
@@ -146,7 +149,6 @@ class Portfolio : public Planner {
   PlanResult solve(const Termination& stop, const Progress& progress) override {
     const std::unique_ptr<Planner> sampler = makePlanner(kSampler, scene_, samplerParams_);
     if (!makeMms_) return named(sampler->solve(stop, progress), kSampler);
-    prepareTheProcess();
     const Stopwatch clock;
     // The sampler on this thread, where the memory is warm; MMS joins it after the head start.
     Challenger challenger(mms_, makeMms_, stop, progress, clock);
