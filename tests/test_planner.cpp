@@ -8,6 +8,7 @@
 #include "Support.h"
 #include "io/SceneIO.h"
 #include "planner/MmsPlanner.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 using namespace mms::test;
@@ -196,4 +197,31 @@ TEST(Plan, BadQueriesFileExitsTwoNamingTheField) {
   EXPECT_NE(r.err.find("q.json: queries[0].goal: robot 'bar' collides with obstacles["),
             std::string::npos)
       << r.err;
+}
+
+// A robot turning a bend needs a line where it can turn: a small region at the corridor's
+// corner, next to where slice cells have vertices (placements touching two walls). Lines drawn
+// near cell vertices reach it with far fewer manifolds than lines drawn anywhere in the cells
+// (the same seeds, the same rounds otherwise; every path certified).
+TEST(Plan, LinesNearCellVerticesTurnTheBendWithFewerManifolds) {
+  std::vector<Scene> scenes;
+  for (uint64_t k = 1; k <= 6; ++k) scenes.push_back(bendScene(k));
+  scenes.push_back(loadScene(scenario("one-robot/corridor-corner.json")));
+  size_t built[2] = {0, 0};
+  for (const Scene& s : scenes) {
+    const CollisionChecker checker(s);
+    for (int corner = 0; corner < 2; ++corner) {
+      MmsSettings st;
+      st.cornerLineShare = corner ? 0.5 : 0.0;
+      MmsPlanner planner(s, 0, st);
+      const MmsResult r = planner.solve(s.robots[0].start, s.robots[0].goal,
+                                        Termination(planSeconds(60)));
+      ASSERT_EQ(r.status, PlanStatus::Found) << s.name;
+      EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << s.name;
+      built[corner] += r.stats.manifolds.slices + r.stats.manifolds.lines;
+    }
+  }
+  std::printf("manifolds built: %zu with lines near cell vertices, %zu without\n", built[1],
+              built[0]);
+  EXPECT_LT(2 * built[1], built[0]);
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "manifolds/CellRoute.h"
+#include "manifolds/CellSampling.h"
 #include "path/Motion.h"
 #include "planner/Rounds.h"
 #include "util/Parallel.h"
@@ -48,6 +49,13 @@ Vec2 MmsPlanner::nextLinePoint() {
   auto uniform = [&] { return Vec2{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)}; };
   // Part of the points where some slice has room for the robot: lines there can connect.
   if (!slices().empty() && rng_.uniform() < settings_.freeLineShare) {
+    // Near a vertex of a cell: a placement touching two features (a corridor's corner), where
+    // a robot turning a bend must be and uniform points rarely fall.
+    if (rng_.uniform() < settings_.cornerLineShare) {
+      const Slice& s = slices()[rng_.below(slices().size())];
+      if (s.fscCount() > 0)
+        if (const auto p = samplePointNearVertex(s, rng_.below(s.fscCount()), rng_)) return *p;
+    }
     for (int attempt = 0; attempt < 20; ++attempt) {
       const Slice& s = slices()[rng_.below(slices().size())];
       const Vec2 p = uniform();
