@@ -31,10 +31,14 @@ namespace {
 /// simplifier would cost 1-3 ms, as much as the search on open scenes): smoothing belongs to a
 /// certified post-processing step for every planner alike.
 constexpr const char* kSampler = "rrtconnect";
-/// How long the sampler runs alone before MMS starts: what MMS gives up on narrow scenes (a
-/// few percent of its usual tens of milliseconds there), against the 1-3 ms by which MMS's
-/// stopping would otherwise delay a sampler's win on open ones.
-constexpr std::chrono::milliseconds kHeadStart{5};
+/// How long the sampler runs alone before MMS starts: what MMS gives up on narrow scenes,
+/// against the cost of a second thread and of MMS's stopping (it checks the limit between
+/// exact steps) to a sampler that would have won soon after. On the tuning scenes (open
+/// clutter and bends, seeds 1-10; corridor corner and bar-slot) 2 ms left the open scenes as
+/// they were with 5 ms and took auto from 2.05x MMS's time to 1.6x on the narrow ones; 1 ms
+/// cost the open scenes 4 %. The second thread then takes 0.1-2 ms to get going on this
+/// machine.
+constexpr std::chrono::milliseconds kHeadStart{2};
 
 /// MMS allocates and frees large blocks all the time (exact arrangements); with glibc's default
 /// thresholds each such block is mapped and unmapped, or the heap's top trimmed, and every one
