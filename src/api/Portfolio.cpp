@@ -79,7 +79,10 @@ class Challenger final : public Termination::Watcher {
         clock_(clock),
         race_(stop.endingAlsoOn(&ended_)),
         headStartEnds_(Termination::Clock::now() + kHeadStart) {}
-  ~Challenger() { end(); }
+  ~Challenger() {
+    end();
+    join();
+  }
   Challenger(const Challenger&) = delete;
   Challenger& operator=(const Challenger&) = delete;
 
@@ -103,11 +106,13 @@ class Challenger final : public Termination::Watcher {
     prepareTheProcess();
     run();
   }
-  /// Ends the race and waits for MMS; rethrows what it threw.
-  void end() {
-    ended_ = true;
+  /// Ends the race: MMS stops at its next check.
+  void end() { ended_ = true; }
+  /// Waits for MMS to finish: found, out of time, cancelled or ended.
+  void join() {
     if (thread_.joinable()) thread_.join();
   }
+  /// Rethrows what MMS threw.
   void rethrow() const {
     if (failure_) std::rethrow_exception(failure_);
   }
@@ -158,8 +163,13 @@ class Portfolio : public Planner {
     Challenger challenger(mms_, makeMms_, stop, progress, clock);
     PlanResult sampled = sampler->solve(challenger.race().watchedBy(&challenger));
     const double sampledAt = clock.seconds();
-    if (!sampled.found()) challenger.runHere();
-    challenger.end();
+    // Without a path (none in its time, or one the certifier refused) the sampler leaves the
+    // rest of the time to MMS.
+    if (sampled.found())
+      challenger.end();
+    else
+      challenger.runHere();
+    challenger.join();
     challenger.rethrow();
     PlanResult& own = challenger.result();
     const bool samplerWon = sampled.found() && (!own.found() || sampledAt < challenger.foundAt());
