@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "Support.h"
 #include "check/PathChecker.h"
 #include "geometry/CollisionChecker.h"
 #include "manifolds/Compound.h"
+#include "mms/Planner.h"
 #include "planner/TwoRobotPlanner.h"
 #include "scenarios/Generators.h"
 #include "util/Random.h"
@@ -147,4 +149,23 @@ TEST(Compound, TwoRobotPlannerCarriesAndTurns) {
     const CollisionChecker checker(s);
     EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
   }
+}
+
+// The statistics keep the compound subspaces apart (their own phases and counts), and the
+// phases still account for the run's time.
+TEST(Compound, StatisticsShowTheCompoundPhases) {
+  const Scene s = carryTurnScene(2);
+  const PlanResult r = makePlanner("mms", s)->solve(Termination(planSeconds(20)));
+  ASSERT_EQ(r.status, PlanStatus::Found);
+  std::map<std::string, double> phases(r.stats.phases.begin(), r.stats.phases.end());
+  EXPECT_GT(phases["compound_slices"], 0);
+  EXPECT_GT(phases["compound_lines"], 0);
+  EXPECT_GT(phases["overlays"], 0);
+  double sum = 0;
+  for (const auto& [name, seconds] : r.stats.phases) sum += seconds;
+  EXPECT_LE(sum, r.stats.seconds * 1.001);
+  EXPECT_GE(sum, 0.9 * r.stats.seconds);
+  std::map<std::string, size_t> counts(r.stats.counts.begin(), r.stats.counts.end());
+  EXPECT_GT(counts["compound_slices"], 0u);
+  EXPECT_GT(counts["slices"], counts["compound_slices"]);  // slices counts every kind
 }

@@ -15,12 +15,12 @@ namespace {
 
 using Type = ParamSpec::Type;
 
-// What both MMS planners report alike: the sizes, the manifolds' cells and arcs, and the
-// phases from the lines on. `first` are the phases before those (how slices are built).
+// What both MMS planners report alike: the sizes, the manifolds' cells and arcs (`m`), and the
+// phases from connect on. `building` are the phases before those (how manifolds are built).
 template <class Stats>
-PlanStatistics commonStatistics(const Stats& s, std::vector<std::pair<std::string, double>> first) {
+PlanStatistics commonStatistics(const Stats& s, const SubspaceStats& m,
+                                std::vector<std::pair<std::string, double>> building) {
   PlanStatistics p;
-  const SubspaceStats& m = s.manifolds;
   p.seconds = s.totalSeconds;
   p.rounds = s.rounds;
   p.graphNodes = s.graphNodes;
@@ -33,9 +33,8 @@ PlanStatistics commonStatistics(const Stats& s, std::vector<std::pair<std::strin
               {"slice_cells", m.sliceCells},
               {"lines", m.lines},
               {"line_arcs", m.lineArcs}};
-  p.phases = std::move(first);
-  for (const auto& phase : {std::pair<const char*, double>{"lines", m.lineSeconds},
-                            {"connect", m.connectSeconds},
+  p.phases = std::move(building);
+  for (const auto& phase : {std::pair<const char*, double>{"connect", m.connectSeconds},
                             {"search", s.searchSeconds},
                             {"motion", s.motionSeconds},
                             {"shortcut", s.shortcutSeconds},
@@ -45,21 +44,34 @@ PlanStatistics commonStatistics(const Stats& s, std::vector<std::pair<std::strin
 }
 
 PlanStatistics statisticsOf(const MmsStats& s) {
-  return commonStatistics(s, {{"slices", s.manifolds.sliceSeconds}});
+  const SubspaceStats& m = s.manifolds;
+  return commonStatistics(s, m, {{"slices", m.sliceSeconds}, {"lines", m.lineSeconds}});
 }
 
 PlanStatistics statisticsOf(const TwoRobotStats& s) {
-  PlanStatistics p = commonStatistics(
-      s, {{"base_slices", s.baseSliceSeconds}, {"overlays", s.manifolds.sliceSeconds}});
+  const SubspaceStats &one = s.manifolds, &pair = s.compound;
+  SubspaceStats all = one;  // counts over both kinds of subspace
+  all.slices += pair.slices;
+  all.lines += pair.lines;
+  all.sliceCells += pair.sliceCells;
+  all.lineArcs += pair.lineArcs;
+  all.connectSeconds += pair.connectSeconds;
+  PlanStatistics p = commonStatistics(s, all,
+                                      {{"base_slices", s.baseSliceSeconds},
+                                       {"overlays", one.sliceSeconds},
+                                       {"lines", one.lineSeconds},
+                                       {"compound_slices", pair.sliceSeconds},
+                                       {"compound_lines", pair.lineSeconds}});
   p.counts.insert(p.counts.begin(), {{"subspaces", s.subspaces},
                                      {"fixings_0", s.fixings[0]},
                                      {"fixings_1", s.fixings[1]},
                                      {"expanded_fixings", s.expandedFixings},
-                                     {"narrow_arc_slices", s.manifolds.localSlices},
+                                     {"narrow_arc_slices", one.localSlices},
+                                     {"compound_slices", pair.slices},
                                      {"compound_lines", s.compoundLines},
                                      {"cross_edges", s.crossEdges},
                                      {"path_subspaces", s.pathSubspaces}});
-  p.phases.insert(p.phases.begin() + 4, {"cross", s.crossSeconds});  // after connect
+  p.phases.insert(p.phases.begin() + 6, {"cross", s.crossSeconds});  // after connect
   return p;
 }
 

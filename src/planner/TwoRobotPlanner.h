@@ -73,11 +73,12 @@ struct TwoRobotSettings {
 struct TwoRobotStats {
   size_t rounds = 0, subspaces = 0, crossEdges = 0, graphNodes = 0, graphEdges = 0;
   size_t expandedFixings = 0;  // fixings drawn from cells reached from start or goal
-  size_t compoundLines = 0;    // lines of the compound subspace (its slices count as slices)
+  size_t compoundLines = 0;    // lines of the compound subspaces (also in compound.lines)
   size_t pathCells = 0, rejectedPaths = 0;
   size_t pathManifolds = 0, pathSubspaces = 0;  // of those built: slices + lines, subspaces
   std::array<size_t, 2> fixings{0, 0};
-  SubspaceStats manifolds;  // slices, lines, cells, arcs over all subspaces
+  SubspaceStats manifolds;  // slices, lines, cells, arcs over all one-robot subspaces
+  SubspaceStats compound;   // the same over the compound subspaces (the pair as one body)
   double baseSliceSeconds = 0, crossSeconds = 0, searchSeconds = 0, motionSeconds = 0,
          shortcutSeconds = 0, certifySeconds = 0;
   double totalSeconds = 0;
