@@ -6,6 +6,7 @@
 #include "Support.h"
 #include "geometry/Exact.h"
 #include "manifolds/Slice.h"
+#include "mms/Planner.h"
 #include "mms/Termination.h"
 #include "planner/MmsPlanner.h"
 #include "planner/TwoRobotPlanner.h"
@@ -57,7 +58,22 @@ TEST(Limits, TwoRobotPlannerBuildsNothingBeforeSolve) {
   const TwoRobotResult r = planner.solve(Termination(0.001));
   EXPECT_EQ(r.status, PlanStatus::NotFound);
   EXPECT_EQ(r.stats.subspaces, 0u);
-  EXPECT_EQ(r.stats.baseSliceSeconds, 0.0);  // the base slices were not built before solve()
+  // The base slices were not built before solve(): what they took lies within its time (the
+  // one cut short by the limit counts).
+  EXPECT_LE(r.stats.baseSliceSeconds, r.stats.totalSeconds);
+}
+
+// A run the limit ends inside a slice still accounts for its time: the phases sum to it.
+TEST(Limits, PhasesAccountForARunTheLimitCutShortInsideASlice) {
+  const Scene scene = crowded(1);
+  for (const double limit : {0.05, 0.3}) {
+    const PlanResult r = makePlanner("mms", scene)->solve(Termination(limit));
+    EXPECT_EQ(r.status, PlanStatus::NotFound);
+    double sum = 0;
+    for (const auto& [name, seconds] : r.stats.phases) sum += seconds;
+    EXPECT_GE(sum, 0.8 * r.stats.seconds) << "limit " << limit;
+    EXPECT_LE(sum, r.stats.seconds * 1.001) << "limit " << limit;
+  }
 }
 
 }  // namespace

@@ -102,4 +102,19 @@ class Stopwatch {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+/// Adds the seconds its scope lasted to `total` when the scope ends, also by an exception: a
+/// manifold the time limit cut short (Stopped) took that time too, and the phases must account
+/// for the run.
+class TimeCharge {
+ public:
+  explicit TimeCharge(double& total) : total_(total) {}
+  ~TimeCharge() { total_ += watch_.seconds(); }
+  TimeCharge(const TimeCharge&) = delete;
+  TimeCharge& operator=(const TimeCharge&) = delete;
+
+ private:
+  double& total_;
+  Stopwatch watch_;
+};
+
 }  // namespace mms

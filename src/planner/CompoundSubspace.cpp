@@ -23,11 +23,12 @@ bool CompoundSubspace::free(const Pose& q) const {
 }
 
 void CompoundSubspace::addSlice(const Slice& carrierBase, const SliceWorld& attachedWorld) {
-  Stopwatch watch;
-  const Slice attached(attachedWorld,
-                       exact::rationalAngleNear(carrierBase.theta() + frame_.dtheta, 30));
-  slices_.emplace_back(carrierBase, attached, frame_.offset);
-  stats_.sliceSeconds += watch.seconds();
+  {
+    const TimeCharge charge(stats_.sliceSeconds);
+    const Slice attached(attachedWorld,
+                         exact::rationalAngleNear(carrierBase.theta() + frame_.dtheta, 30));
+    slices_.emplace_back(carrierBase, attached, frame_.offset);
+  }
   const size_t k = slices_.size() - 1;
   addJoinedSlice(roadmap_, stats_, std::make_unique<CompoundSliceManifold>(frame_, slices_, k),
                  group_, uint32_t(k), weave_);

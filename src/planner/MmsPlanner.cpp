@@ -66,10 +66,12 @@ Vec2 MmsPlanner::nextLinePoint() {
 }
 
 void MmsPlanner::addSlice(double theta) {
-  Stopwatch watch;
-  const Slice base(sliceWorld_, exact::rationalAngleNear(theta, 30), settings_.pointLocation);
-  stats_.manifolds.sliceSeconds += watch.seconds();
-  subspace().addSlice(base);  // nothing is held: shares the base's cells
+  std::optional<Slice> base;
+  {
+    const TimeCharge charge(stats_.manifolds.sliceSeconds);
+    base.emplace(sliceWorld_, exact::rationalAngleNear(theta, 30), settings_.pointLocation);
+  }
+  subspace().addSlice(*base);  // nothing is held: shares the base's cells
 }
 
 // The slice at the next angle of the sequence. Slices are built settings_.threads at a time
@@ -78,9 +80,8 @@ void MmsPlanner::addNextSlice() {
   if (ahead_.empty()) {
     std::vector<double> thetas(std::max(1u, settings_.threads));
     for (double& t : thetas) t = angles_.next();
-    stats_.manifolds.sliceSeconds +=
-        buildSlices(sliceWorld_, thetas, settings_.threads, settings_.pointLocation,
-                    [&](Slice&& s) { ahead_.push_back(std::move(s)); });
+    buildSlices(sliceWorld_, thetas, settings_.threads, settings_.pointLocation,
+                stats_.manifolds.sliceSeconds, [&](Slice&& s) { ahead_.push_back(std::move(s)); });
   }
   subspace().addSlice(ahead_.front());  // nothing is held: shares the base's cells
   ahead_.pop_front();

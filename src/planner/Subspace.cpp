@@ -25,26 +25,26 @@ std::vector<Ring> placedRings(const std::vector<MovedShape>& shapes) {
 }
 }  // namespace
 
-double buildSlices(const SliceWorld& world, const std::vector<double>& thetas, unsigned threads,
-                   PointLocation strategy, const std::function<void(Slice&&)>& add) {
+void buildSlices(const SliceWorld& world, const std::vector<double>& thetas, unsigned threads,
+                 PointLocation strategy, double& seconds, const std::function<void(Slice&&)>& add) {
   const size_t batch = std::max(1u, threads);
-  double seconds = 0;
   for (size_t done = 0; done < thetas.size();) {
     checkpoint();  // the limit, between batches
     const size_t n = std::min(batch, thetas.size() - done);
     std::vector<std::optional<Slice>> built(n);
-    Stopwatch watch;
-    const auto errors = parallelFor(n, threads, [&](size_t i) {
-      built[i].emplace(world, exact::rationalAngleNear(thetas[done + i], 30), strategy);
-    });
-    seconds += watch.seconds();
+    std::vector<std::exception_ptr> errors;
+    {
+      const TimeCharge charge(seconds);
+      errors = parallelFor(n, threads, [&](size_t i) {
+        built[i].emplace(world, exact::rationalAngleNear(thetas[done + i], 30), strategy);
+      });
+    }
     for (size_t i = 0; i < n; ++i) {
       if (errors[i]) std::rethrow_exception(errors[i]);
       add(std::move(*built[i]));
     }
     done += n;
   }
-  return seconds;
 }
 
 Scene withContactShapes(const Scene& scene, const CollisionChecker& checker) {
@@ -91,10 +91,12 @@ void Subspace::addLocalOverlay(Slice slice) {
 Slice Subspace::overlay(const Slice& base) const { return Slice(base, heldShapes_); }
 
 size_t Subspace::addSlice(const Slice& base) {
-  Stopwatch watch;
-  Slice slice = overlay(base);
-  stats_.sliceSeconds += watch.seconds();
-  return addOverlay(std::move(slice));
+  std::optional<Slice> slice;
+  {
+    const TimeCharge charge(stats_.sliceSeconds);
+    slice.emplace(overlay(base));
+  }
+  return addOverlay(std::move(*slice));
 }
 
 size_t Subspace::addOverlay(Slice slice) {

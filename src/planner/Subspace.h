@@ -32,9 +32,10 @@ Scene withContactShapes(const Scene& scene, const CollisionChecker& checker);
 
 /// Slices of `world` at `thetas`, built `threads` at a time and passed to `add` in the order of
 /// `thetas`, so what is built does not depend on the thread count. A build that throws (Stopped
-/// at the time limit) ends it: the slices before it have been added. Returns the seconds spent.
-double buildSlices(const SliceWorld& world, const std::vector<double>& thetas, unsigned threads,
-                   PointLocation strategy, const std::function<void(Slice&&)>& add);
+/// at the time limit) ends it: the slices before it have been added. Adds the seconds spent
+/// building to `seconds`, also when it ends so.
+void buildSlices(const SliceWorld& world, const std::vector<double>& thetas, unsigned threads,
+                 PointLocation strategy, double& seconds, const std::function<void(Slice&&)>& add);
 
 /// A slice-family manifold added to the roadmap as `index` in `group` and woven into side 1 of
 /// `weave` (its lines on side 0: a line's arc is found by one binary search, a slice's cell by
@@ -47,9 +48,8 @@ inline uint32_t addJoinedSlice(Roadmap& roadmap, SubspaceStats& stats,
   const uint32_t id = roadmap.add(std::move(slice), group, index);
   ++stats.slices;
   stats.sliceCells += cells;
-  Stopwatch connect;
+  const TimeCharge connect(stats.connectSeconds);
   roadmap.weave(weave, 1, id);
-  stats.connectSeconds += connect.seconds();
   return id;
 }
 
@@ -60,16 +60,16 @@ template <class Make>
 uint32_t addJoinedLine(Roadmap& roadmap, SubspaceStats& stats, std::vector<Line>& lines,
                        const LineWorld& world, const PoseTest& free, Vec2 p, uint32_t group,
                        const Make& make, uint32_t weave) {
-  Stopwatch watch;
-  lines.emplace_back(world, free, p, &stats.lineStats);
-  stats.lineSeconds += watch.seconds();
+  {
+    const TimeCharge charge(stats.lineSeconds);
+    lines.emplace_back(world, free, p, &stats.lineStats);
+  }
   const size_t l = lines.size() - 1;
   const uint32_t id = roadmap.add(make(l), group, uint32_t(l));
   ++stats.lines;
   stats.lineArcs += lines[l].arcs().size();
-  Stopwatch connect;
+  const TimeCharge connect(stats.connectSeconds);
   roadmap.weave(weave, 0, id);
-  stats.connectSeconds += connect.seconds();
   return id;
 }
 

@@ -40,10 +40,9 @@ void TwoRobotPlanner::buildBaseSlices(const Termination& stop) {
   for (size_t r = 0; r < 2 && !stop(); ++r) {
     if (!base_[r].empty()) continue;
     if (translates_[r]) {
-      Stopwatch watch;
+      const TimeCharge charge(stats_.baseSliceSeconds);
       base_[r].emplace_back(*worlds_[r],
                             exact::rationalAngleNear(scene_.robots[r].start.theta, 30));
-      stats_.baseSliceSeconds += watch.seconds();
     } else {
       // The robot's start and goal angles first: a slice there contains the whole passage of
       // positions around the start or goal, where tight problems are often tightest (a part
@@ -67,9 +66,8 @@ void TwoRobotPlanner::addAngles(size_t robot, const std::vector<double>& thetas,
                                 const Termination& stop) {
   const size_t firstNode = roadmap_.nodeCount(), firstAngle = base_[robot].size();
   if (stop()) return;
-  stats_.baseSliceSeconds +=
-      buildSlices(*worlds_[robot], thetas, settings_.threads, PointLocation::Auto,
-                  [&](Slice&& s) { base_[robot].push_back(std::move(s)); });
+  buildSlices(*worlds_[robot], thetas, settings_.threads, PointLocation::Auto,
+              stats_.baseSliceSeconds, [&](Slice&& s) { base_[robot].push_back(std::move(s)); });
   std::vector<Subspace*> moving;
   for (auto& sub : subspaces_)
     if (sub->moving() == robot) moving.push_back(sub.get());
