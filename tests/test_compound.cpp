@@ -145,7 +145,7 @@ TEST(Compound, TwoRobotPlannerCarriesAndTurns) {
     TwoRobotPlanner planner(s, st);
     const TwoRobotResult r = planner.solve(Termination(planSeconds(20)));
     ASSERT_EQ(r.status, PlanStatus::Found);
-    EXPECT_GT(r.stats.compoundLines, 0u);
+    EXPECT_GT(r.stats.compound.lines, 0u);
     const CollisionChecker checker(s);
     EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
   }

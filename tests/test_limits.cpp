@@ -17,6 +17,14 @@ namespace {
 
 Scene crowded(int robots) { return randomScene({3, robots, 1000}); }
 
+// The default planner on the sealed ring (a bar outside a ring it cannot enter: no solution) for
+// 60 s under a memory limit, the path file to `out`.
+test::Outcome planSealedRing(int memoryLimitMb, const std::string& out) {
+  return test::runMms("plan " + test::quote(test::scenario("one-robot/sealed-ring.json")) +
+                      " --time-limit 60 --memory-limit " + std::to_string(memoryLimitMb) +
+                      " -q -o " + test::quote(out));
+}
+
 TEST(Limits, SliceConstructionStopsAtTheScopesLimit) {
   const Scene scene = crowded(1);
   ASSERT_EQ(scene.obstacles.size(), 1000u);
@@ -76,12 +84,6 @@ TEST(Limits, PhasesAccountForARunTheLimitCutShortInsideASlice) {
   }
 }
 
-}  // namespace
-}  // namespace mms
-
-namespace mms {
-namespace {
-
 TEST(Limits, MemoryLimitEndsThePlanWithOutOfMemoryAndNoFile) {
   test::TempDir dir;
   const std::string scene = dir.path("crowded.json"), out = dir.path("path.json");
@@ -104,12 +106,6 @@ TEST(Limits, MemoryLimitEndsThePlanWithOutOfMemoryAndNoFile) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
-}  // namespace
-}  // namespace mms
-
-namespace mms {
-namespace {
-
 // The roadmap's memory grows with its manifolds, not with their meetings: a whole default run
 // on a scene without a solution (the sealed ring: a bar outside a ring it cannot enter) fits in
 // 1 GB and ends "not found" at its time limit. Before weaves it took 1.4 GB here.
@@ -117,19 +113,11 @@ TEST(Limits, AFullRunOnAnUnsolvableSceneStaysUnderAGigabyte) {
   if (test::kSanitized) return;  // the sanitizers reserve terabytes: no cap on address space
   test::TempDir dir;
   const std::string out = dir.path("path.json");
-  const test::Outcome r =
-      test::runMms("plan " + test::quote(test::scenario("one-robot/sealed-ring.json")) +
-                   " --time-limit 60 --memory-limit 1024 -q -o " + test::quote(out));
+  const test::Outcome r = planSealedRing(1024, out);
   EXPECT_EQ(r.code, 1) << r.out << r.err;
   EXPECT_EQ(r.err.find("out of memory"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
 }
-
-}  // namespace
-}  // namespace mms
-
-namespace mms {
-namespace {
 
 // The default planner runs a second thread; where memory runs out there, the run still ends
 // with the one-line message and exit 3 (glibc once aborted: the library a second thread's
@@ -138,9 +126,7 @@ TEST(Limits, ThePortfolioRunsOutOfMemoryCleanly) {
   if (test::kSanitized) return;  // the sanitizers reserve terabytes: no cap on address space
   test::TempDir dir;
   const std::string out = dir.path("path.json");
-  const test::Outcome r =
-      test::runMms("plan " + test::quote(test::scenario("one-robot/sealed-ring.json")) +
-                   " --memory-limit 80 --time-limit 60 -q -o " + test::quote(out));
+  const test::Outcome r = planSealedRing(80, out);
   EXPECT_EQ(r.code, 3) << r.out << r.err;
   EXPECT_EQ(r.err, "mms: out of memory (see --memory-limit); no output written\n");
   EXPECT_FALSE(std::filesystem::exists(out));

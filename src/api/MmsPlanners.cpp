@@ -68,7 +68,7 @@ PlanStatistics statisticsOf(const TwoRobotStats& s) {
                                      {"expanded_fixings", s.expandedFixings},
                                      {"narrow_arc_slices", one.localSlices},
                                      {"compound_slices", pair.slices},
-                                     {"compound_lines", s.compoundLines},
+                                     {"compound_lines", pair.lines},
                                      {"cross_edges", s.crossEdges},
                                      {"path_subspaces", s.pathSubspaces}});
   p.phases.insert(p.phases.begin() + 6, {"cross", s.crossSeconds});  // after connect

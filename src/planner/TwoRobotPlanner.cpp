@@ -122,7 +122,6 @@ void TwoRobotPlanner::addCompound(const Termination& stop) {
     for (const auto& [carrier, held, end] :
          {std::tuple{a.start, size_t(0), from_}, std::tuple{a.goal, size_t(2), to_}}) {
       const uint32_t line = c.addLine({carrier.x, carrier.y});
-      ++stats_.compoundLines;
       roadmap_.join(line, roadmap_.graph().node(size_t(end)).manifold);
       const Pose other = f.attachedPose(carrier);
       const Pose own = held == 0 ? b.start : b.goal;
@@ -143,7 +142,6 @@ void TwoRobotPlanner::addCompoundLines(CompoundSubspace& c, size_t count, const 
     std::optional<Vec2> p;
     if (rng_.uniform() < 0.5) p = c.pointInCell(rng_);
     c.addLine(p ? *p : linePoint(c.frame().carrier));
-    ++stats_.compoundLines;
   }
 }
 
@@ -157,12 +155,14 @@ void TwoRobotPlanner::addOverlays(
     checkpoint();
     const size_t n = std::min(batch, count - done);
     std::vector<std::optional<Slice>> built(n);
-    Stopwatch watch;
-    const auto errors = parallelFor(n, settings_.threads, [&](size_t i) {
-      const auto [sub, base] = item(done + i);
-      built[i].emplace(sub->overlay(*base));
-    });
-    stats_.manifolds.sliceSeconds += watch.seconds();
+    std::vector<std::exception_ptr> errors;
+    {
+      const TimeCharge charge(stats_.manifolds.sliceSeconds);
+      errors = parallelFor(n, settings_.threads, [&](size_t i) {
+        const auto [sub, base] = item(done + i);
+        built[i].emplace(sub->overlay(*base));
+      });
+    }
     for (size_t i = 0; i < n; ++i) {
       if (errors[i]) std::rethrow_exception(errors[i]);
       item(done + i).first->addOverlay(std::move(*built[i]));
@@ -192,12 +192,14 @@ void TwoRobotPlanner::sliceNarrowArcs(Subspace& sub) {
     }
   // Built on all threads (each a new base slice and its overlay), added in arc order.
   std::vector<std::optional<Slice>> built(middles.size());
-  Stopwatch watch;
-  const auto errors = parallelFor(middles.size(), settings_.threads, [&](size_t i) {
-    const Slice base(*worlds_[moving], middles[i]);
-    built[i].emplace(sub.overlay(base));
-  });
-  stats_.manifolds.sliceSeconds += watch.seconds();
+  std::vector<std::exception_ptr> errors;
+  {
+    const TimeCharge charge(stats_.manifolds.sliceSeconds);
+    errors = parallelFor(middles.size(), settings_.threads, [&](size_t i) {
+      const Slice base(*worlds_[moving], middles[i]);
+      built[i].emplace(sub.overlay(base));
+    });
+  }
   for (size_t i = 0; i < middles.size(); ++i) {
     if (errors[i]) std::rethrow_exception(errors[i]);
     sub.addLocalOverlay(std::move(*built[i]));

@@ -73,7 +73,6 @@ struct TwoRobotSettings {
 struct TwoRobotStats {
   size_t rounds = 0, subspaces = 0, crossEdges = 0, graphNodes = 0, graphEdges = 0;
   size_t expandedFixings = 0;  // fixings drawn from cells reached from start or goal
-  size_t compoundLines = 0;    // lines of the compound subspaces (also in compound.lines)
   size_t pathCells = 0, rejectedPaths = 0;
   size_t pathManifolds = 0, pathSubspaces = 0;  // of those built: slices + lines, subspaces
   std::array<size_t, 2> fixings{0, 0};
