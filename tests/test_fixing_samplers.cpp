@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "geometry/CollisionChecker.h"
 #include "planner/FixingSamplers.h"
@@ -40,7 +41,10 @@ class RecordingHost final : public FixingHost {
     return held.size() - 1;
   }
   long nodeWhereHeld(size_t, size_t) const override { return -1; }
+  bool leavesRoom(const Fixing& f) override { return !blocks || !blocks(f); }
   void countExpanded() override {}
+
+  std::function<bool(const Fixing&)> blocks;  // leavesRoom's answer, negated (none: room)
 
   std::vector<Fixing> held;
 
@@ -81,6 +85,36 @@ TEST(FixingSamplers, CornerFixingsAreFreeAndFindTheNicheMoreOftenThanUniformOnes
   // The niche is a few percent of the free space by area, and a third or more of its vertices.
   EXPECT_GT(inNiche[0], 2 * inNiche[1]) << inNiche[0] << " vs " << inNiche[1];
   EXPECT_GT(inNiche[0], size_t(0.1 * 3 * draws));
+}
+
+// Screened corners hold the first candidate the host says leaves the other robot room, else
+// the last one drawn: with a host that calls only niche poses roomy, most fixings land in the
+// niche, and none is lost when no candidate qualifies.
+TEST(FixingSamplers, ScreenedCornerFixingsHoldTheFirstCandidateThatLeavesRoom) {
+  const Scene s = nicheSwapScene(2);
+  const double left = s.obstacles[0][1].x, right = s.obstacles[1][0].x;
+  const double corridorTop = s.obstacles[0][0].y;
+  auto inNiche = [&](const Fixing& f) {
+    return f.pose.x > left && f.pose.x < right && f.pose.y > corridorTop;
+  };
+  const int draws = 200;
+  size_t niche[2] = {0, 0};  // screened, unscreened
+  for (int which = 0; which < 2; ++which) {
+    RecordingHost host(s, 0, 8);
+    host.blocks = [&](const Fixing& f) { return !inNiche(f); };
+    CornerFixings corners(which == 0 ? 16 : 1);
+    for (int i = 0; i < draws; ++i) ASSERT_TRUE(corners.grow(0, host, Termination(60)));
+    ASSERT_EQ(host.held.size(), size_t(draws));
+    for (const Fixing& f : host.held) niche[which] += inNiche(f);
+  }
+  EXPECT_GT(niche[0], size_t(0.5 * draws)) << niche[0];
+  EXPECT_GT(niche[0], 2 * niche[1]) << niche[0] << " vs " << niche[1];
+  // Nothing qualifies: every grow still holds a corner pose.
+  RecordingHost none(s, 0, 8);
+  none.blocks = [](const Fixing&) { return true; };
+  CornerFixings corners(16);
+  for (int i = 0; i < 20; ++i) ASSERT_TRUE(corners.grow(0, none, Termination(60)));
+  EXPECT_EQ(none.held.size(), 20u);
 }
 
 }  // namespace

@@ -77,36 +77,67 @@ TEST(ScenarioCarryTurn, SameSeedSameSceneOtherSeedsOtherScenes) {
   EXPECT_NE(sceneToJson(carryTurnScene(4)), sceneToJson(carryTurnScene(5)));
 }
 
+// The extent of a robot's shape along x (axis 0) or y (axis 1): [lo, hi].
+std::pair<double, double> shapeExtent(const Ring& r, int axis) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Vec2 v : r) {
+    const double c = axis == 0 ? v.x : v.y;
+    lo = std::min(lo, c), hi = std::max(hi, c);
+  }
+  return {lo, hi};
+}
+
 // Robot 0 waits in the niche while robot 1 passes below it: certified on seeds 1-10. Side by
-// side the two do not fit the corridor, so the niche is needed.
-TEST(ScenarioNicheSwap, EverySeedIsSolvedThroughTheNiche) {
+// side the two do not fit the corridor, so the niche is needed; the niche fits the larger robot
+// with a play of 0.04-0.1 of the robots' size (or the play asked for).
+TEST(ScenarioNicheSwap, EverySeedIsSolvedThroughATightNiche) {
   for (uint64_t seed = 1; seed <= 10; ++seed) {
-    SCOPED_TRACE(seed);
-    const Scene s = nicheSwapScene(seed);
-    ASSERT_NO_THROW(parseScene(sceneToJson(s), "niche-swap"));
-    const CollisionChecker checker(s);
-    // The niche: the gap in the corridor's upper wall (obstacles 0 and 1 flank it).
-    const double left = s.obstacles[0][1].x, right = s.obstacles[1][0].x;
-    const double top = s.obstacles[2][0].y, corridor = s.obstacles[0][0].y;
-    const Pose a0 = s.robots[0].start, a1 = s.robots[0].goal;
-    const Pose b0 = s.robots[1].start, b1 = s.robots[1].goal;
-    const double nx = (left + right) / 2, ny = top - 0.52;
-    const std::vector<Config> w{{a0.x, a0.y, 0, b0.x, b0.y, 0}, {nx, a0.y, 0, b0.x, b0.y, 0},
-                                {nx, ny, 0, b0.x, b0.y, 0},     {nx, ny, 0, b1.x, b1.y, 0},
-                                {nx, a0.y, 0, b1.x, b1.y, 0},   {a1.x, a1.y, 0, b1.x, b1.y, 0}};
-    const PathCheckResult r = checkPath(s, checker, w);
-    EXPECT_TRUE(r.ok) << r.reason;
-    // At their angle the two robots' heights add up to more than the corridor's width: they
-    // cannot pass side by side.
-    double height = 0;
-    for (const Robot& rb : s.robots) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (const Vec2 v : rb.shape) lo = std::min(lo, v.y), hi = std::max(hi, v.y);
-      height += hi - lo;
+    for (const double play : {-1.0, 0.5}) {
+      SCOPED_TRACE(std::to_string(seed) + " play " + std::to_string(play));
+      const Scene s = nicheSwapScene(seed, play);
+      ASSERT_NO_THROW(parseScene(sceneToJson(s), "niche-swap"));
+      const CollisionChecker checker(s);
+      // The niche: the gap in the corridor's upper wall (obstacles 0 and 1 flank it).
+      const double left = s.obstacles[0][1].x, right = s.obstacles[1][0].x;
+      const double top = s.obstacles[2][0].y, corridor = s.obstacles[0][0].y;
+      double widest = 0, tallest = 0;
+      for (const Robot& rb : s.robots) {
+        const auto [xlo, xhi] = shapeExtent(rb.shape, 0);
+        const auto [ylo, yhi] = shapeExtent(rb.shape, 1);
+        widest = std::max(widest, xhi - xlo), tallest = std::max(tallest, yhi - ylo);
+      }
+      const double spareX = right - left - widest, spareY = top - corridor - tallest;
+      EXPECT_NEAR(spareX, spareY, 1e-9);
+      if (play < 0) {
+        EXPECT_GE(spareX, 0.04 - 1e-9);
+        EXPECT_LE(spareX, 0.1 + 1e-9);
+      } else {
+        EXPECT_NEAR(spareX, play, 1e-9);
+      }
+      // Robot 0 centred in the niche.
+      const auto [xlo, xhi] = shapeExtent(s.robots[0].shape, 0);
+      const auto [ylo, yhi] = shapeExtent(s.robots[0].shape, 1);
+      const double nx = (left + right) / 2 - (xlo + xhi) / 2;
+      const double ny = (corridor + top) / 2 - (ylo + yhi) / 2;
+      const Pose a0 = s.robots[0].start, a1 = s.robots[0].goal;
+      const Pose b0 = s.robots[1].start, b1 = s.robots[1].goal;
+      const std::vector<Config> w{{a0.x, a0.y, 0, b0.x, b0.y, 0}, {nx, a0.y, 0, b0.x, b0.y, 0},
+                                  {nx, ny, 0, b0.x, b0.y, 0},     {nx, ny, 0, b1.x, b1.y, 0},
+                                  {nx, a0.y, 0, b1.x, b1.y, 0},   {a1.x, a1.y, 0, b1.x, b1.y, 0}};
+      const PathCheckResult r = checkPath(s, checker, w);
+      EXPECT_TRUE(r.ok) << r.reason;
+      // At their angle the two robots' heights add up to more than the corridor's width: they
+      // cannot pass side by side.
+      double height = 0;
+      for (const Robot& rb : s.robots) {
+        const auto [lo, hi] = shapeExtent(rb.shape, 1);
+        height += hi - lo;
+      }
+      EXPECT_LT(corridor, height);
     }
-    EXPECT_LT(corridor, height);
   }
   EXPECT_NE(sceneToJson(nicheSwapScene(4)), sceneToJson(nicheSwapScene(5)));
+  EXPECT_EQ(sceneToJson(nicheSwapScene(4)), sceneToJson(nicheSwapScene(4)));
 }
 
 // Doors: lined up with the door (angle 0) the robot slides through each wall, and turns in the

@@ -99,6 +99,12 @@ int view(const ViewArgs& a) {
 }
 
 int scenario(const ScenarioArgs& a) {
+  if ((a.name == "assembly-1" || a.name == "assembly-2") && a.slack > 0.15) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", a.slack);
+    throw InputError(std::string("--slack: ") + value + " is more than " + a.name +
+                     "'s largest play, 0.15");
+  }
   Scene s;
   if (a.name == "pacman")
     s = pacmanScene(a.tightness);
@@ -113,7 +119,7 @@ int scenario(const ScenarioArgs& a) {
   else if (a.name == "carry-turn")
     s = carryTurnScene(a.seed);
   else if (a.name == "niche-swap")
-    s = nicheSwapScene(a.seed);
+    s = nicheSwapScene(a.seed, a.slackGiven ? a.slack : -1);
   else if (a.name == "open-clutter")
     s = openClutterScene(a.seed);
   else if (a.name == "bend")

@@ -71,6 +71,7 @@ struct ScenarioArgs {
   double tightness = 0;
   uint64_t seed = 1;
   double slack = 0.05;
+  bool slackGiven = false;  // niche-swap draws its play from the seed unless given
   bool mPartsOnly = false;
   int robots = 0, obstacles = -1;  // random: 0 / -1 = drawn from the seed
 };

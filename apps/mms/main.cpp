@@ -186,11 +186,14 @@ int main(int argc, char** argv) {
       ->add_option("--obstacles", sa.obstacles,
                    "random: how many obstacles (default: from the seed)")
       ->check(CLI::Range(0, 100000));
-  scenarioCmd
-      ->add_option("--slack", sa.slack,
-                   "assembly-1/2: the play between parts and walls (the smaller, the tighter)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.001, 0.15));
+  auto* slackOption =
+      scenarioCmd
+          ->add_option("--slack", sa.slack,
+                       "assembly-1/2: the play between parts and walls, at most 0.15 (the "
+                       "smaller, the tighter); niche-swap: the niche's play around a robot, a "
+                       "share of its size (default: 0.04-0.1 from the seed; 0.5 is roomy)")
+          ->capture_default_str()
+          ->check(CLI::Range(0.001, 1.0));
   scenarioCmd->add_flag("--m-parts-only", sa.mPartsOnly,
                         "assembly-2: only the two M parts, with goals outside (the 4-D problem "
                         "left once the triangles are out)");
@@ -360,7 +363,10 @@ int main(int argc, char** argv) {
           }
           return plan(pa);
         }
-        if (*scenarioCmd) return scenario(sa);
+        if (*scenarioCmd) {
+          sa.slackGiven = slackOption->count() > 0;
+          return scenario(sa);
+        }
         if (*assembleCmd) return assemble(aa);
         if (*benchCmd) {
           ba.planners.clear();

@@ -66,6 +66,7 @@ PlanStatistics statisticsOf(const TwoRobotStats& s) {
                                      {"fixings_0", s.fixings[0]},
                                      {"fixings_1", s.fixings[1]},
                                      {"expanded_fixings", s.expandedFixings},
+                                     {"screened_poses", s.screenedPoses},
                                      {"narrow_arc_slices", one.localSlices},
                                      {"compound_slices", pair.slices},
                                      {"compound_lines", pair.lines},

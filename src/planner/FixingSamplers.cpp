@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "manifolds/CellSampling.h"
 #include "manifolds/OneRobot.h"
@@ -25,15 +26,20 @@ bool MixedFixings::grow(size_t robot, FixingHost& host, const Termination& stop)
 bool CornerFixings::grow(size_t robot, FixingHost& host, const Termination& stop) {
   const std::vector<Slice>& base = host.baseSlices(robot);
   Random& rng = host.rng();
-  for (int attempt = 0; attempt < 16; ++attempt) {
+  std::optional<Fixing> last;
+  size_t drawn = 0;
+  for (int attempt = 0; attempt < 16 * int(candidates_) && drawn < candidates_; ++attempt) {
     const size_t k = rng.below(base.size());
     if (base[k].fscCount() == 0) continue;
     const auto p = samplePointNearVertex(base[k], rng.below(base[k].fscCount()), rng);
     if (!p) continue;
-    host.hold(host.fixingAt(robot, k, *p, -1), stop);
-    return true;
+    last = host.fixingAt(robot, k, *p, -1);
+    ++drawn;
+    if (drawn == candidates_ || host.leavesRoom(*last)) break;
   }
-  return false;
+  if (!last) return false;
+  host.hold(*last, stop);
+  return true;
 }
 
 bool UniformFixings::grow(size_t robot, FixingHost& host, const Termination& stop) {

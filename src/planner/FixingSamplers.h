@@ -8,6 +8,7 @@
 // exact free-space cells already reached from the start or the goal (FrontierFixings,
 // ConnectChains) always meet the subspace they come from, so they grow the graph into such
 // places, as EST and RRT grow trees. MixedFixings is the planner's policy over the three.
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -58,6 +59,11 @@ class FixingHost {
   /// The node of subspace `k` whose cell holds the pose at which subspace `held` holds its
   /// robot (the robot that moved there stands still here), or -1.
   virtual long nodeWhereHeld(size_t k, size_t held) const = 0;
+  /// Whether the other robot, at the first angle of its set (its start angle), has no more
+  /// free-space cells with f held than among the obstacles alone: f cuts none of its passages
+  /// (a robot waiting in a niche, not across the corridor). One overlay: far cheaper than the
+  /// subspace f would make.
+  virtual bool leavesRoom(const Fixing& f) = 0;
   /// Counts a fixing drawn from reached cells (statistics).
   virtual void countExpanded() = 0;
 
@@ -82,10 +88,16 @@ class UniformFixings final : public FixingSampler {
 /// A free pose near a vertex of a cell of the robot's slice among the obstacles (slice and cell
 /// uniform, then a vertex): a robot tucked into a corner, out of the other's way (waiting in a
 /// niche, pressed into a pocket). Such poses are a sliver of the free space by area, so
-/// UniformFixings almost never draws them.
+/// UniformFixings almost never draws them. Of up to `candidates` such poses it holds the first
+/// that leaves the other robot room (FixingHost::leavesRoom), else the last: most corners of a
+/// corridor block it, the niche's do not.
 class CornerFixings final : public FixingSampler {
  public:
+  explicit CornerFixings(size_t candidates = 1) : candidates_(std::max<size_t>(1, candidates)) {}
   bool grow(size_t robot, FixingHost& host, const Termination& stop) override;
+
+ private:
+  size_t candidates_;
 };
 
 /// One fixing in a reached cell: the smaller of two drawn uniformly, half of the points near
@@ -112,10 +124,12 @@ class ConnectChains final : public FixingSampler {
 /// `cornerShare` in corners, the rest uniform.
 class MixedFixings final : public FixingSampler {
  public:
-  MixedFixings(double expandShare, double connectShare, size_t connectSteps, double cornerShare)
+  MixedFixings(double expandShare, double connectShare, size_t connectSteps, double cornerShare,
+               size_t cornerCandidates)
       : expandShare_(expandShare),
         connectShare_(connectShare),
         cornerShare_(cornerShare),
+        corners_(cornerCandidates),
         chains_(connectSteps) {}
   bool grow(size_t robot, FixingHost& host, const Termination& stop) override;
 

@@ -25,7 +25,8 @@ TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
       contactScene_(withContactShapes(scene_, checker_)),
       rng_(settings.seed),
       sampler_(std::make_unique<MixedFixings>(settings.expandShare, settings.connectShare,
-                                              settings.connectSteps, settings.cornerShare)) {
+                                              settings.connectSteps, settings.cornerShare,
+                                              settings.cornerCandidates)) {
   for (size_t r = 0; r < 2; ++r) {
     translates_[r] = scene_.robots[r].motion == Motion::Translate;
     worlds_[r] = std::make_unique<SliceWorld>(contactScene_, r);
@@ -272,6 +273,17 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
   stats_.crossSeconds += watch.seconds();
   collectCells(firstNode);
   return subspaces_.size() - 1;
+}
+
+bool TwoRobotPlanner::leavesRoom(const Fixing& f) {
+  const Slice& base = base_[1 - f.robot].front();
+  const MovedShape held{f.robot,
+                        f.pose.theta,
+                        placedRing(contactScene_.robots[f.robot].shape, {0, 0, f.pose.theta}),
+                        {f.pose.x, f.pose.y}};
+  const TimeCharge charge(stats_.manifolds.sliceSeconds);
+  ++stats_.screenedPoses;
+  return Slice(base, {held}).fscCount() <= base.fscCount();
 }
 
 TwoRobotResult TwoRobotPlanner::finish(TwoRobotResult r, PlanStatus status) {

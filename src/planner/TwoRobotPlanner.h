@@ -51,6 +51,9 @@ struct TwoRobotSettings {
   // Share of the other fixings drawn near a vertex of the robot's free space among the
   // obstacles (a robot tucked into a corner, out of the other's way); the rest uniform.
   double cornerShare = 0.5;
+  // A corner fixing is the first of up to this many corner poses that cuts no passage of the
+  // other robot at its start angle (one overlay each), else the last.
+  size_t cornerCandidates = 16;
   // A new subspace is tested for meeting points against at most this many subspaces of the
   // other family: those whose held poses are nearest, plus a random sample of the rest.
   size_t crossNearest = 256, crossRandom = 256;
@@ -73,6 +76,7 @@ struct TwoRobotSettings {
 struct TwoRobotStats {
   size_t rounds = 0, subspaces = 0, crossEdges = 0, graphNodes = 0, graphEdges = 0;
   size_t expandedFixings = 0;  // fixings drawn from cells reached from start or goal
+  size_t screenedPoses = 0;    // corner poses screened by an overlay (leavesRoom), in "overlays"
   size_t pathCells = 0, rejectedPaths = 0;
   size_t pathManifolds = 0, pathSubspaces = 0;  // of those built: slices + lines, subspaces
   std::array<size_t, 2> fixings{0, 0};
@@ -119,6 +123,7 @@ class TwoRobotPlanner : private FixingHost {
   Fixing fixingAt(size_t robot, size_t angle, Vec2 p, long parent) const override;
   size_t hold(const Fixing& f, const Termination& stop) override { return addSubspace(f, stop); }
   long nodeWhereHeld(size_t k, size_t held) const override;
+  bool leavesRoom(const Fixing& f) override;
   void countExpanded() override { ++stats_.expandedFixings; }
 
   void collectCells(size_t firstNode);

@@ -228,7 +228,7 @@ Scene vikingHelmetScene() {
   return s;
 }
 
-Scene nicheSwapScene(uint64_t seed) {
+Scene nicheSwapScene(uint64_t seed, double play) {
   Random rng(seed);
   const double size = 1;
   // Blocky shapes: a vertex near each corner of the size x size box, one more on a random side;
@@ -246,16 +246,21 @@ Scene nicheSwapScene(uint64_t seed) {
     return r;
   };
   const Ring shapeA = blocky(), shapeB = blocky();
-  auto height = [](const Ring& r) {
+  auto extent = [](const Ring& r, double Vec2::*axis) {
     double lo = INFINITY, hi = -INFINITY;
-    for (const Vec2 v : r) lo = std::min(lo, v.y), hi = std::max(hi, v.y);
+    for (const Vec2 v : r) lo = std::min(lo, v.*axis), hi = std::max(hi, v.*axis);
     return hi - lo;
   };
   // Room for either robot, not for both side by side.
-  const double hA = height(shapeA), hB = height(shapeB);
+  const double hA = extent(shapeA, &Vec2::y), hB = extent(shapeB, &Vec2::y);
   const double width = rng.uniform(1.1 * std::max(hA, hB), 0.95 * (hA + hB));
   const double length = size * rng.uniform(8, 14);
-  const double nicheWidth = size * rng.uniform(1.2, 1.6), depth = size * rng.uniform(1.2, 1.8);
+  // The niche fits the larger robot at angle 0 with `play` to spare in width and in depth: a
+  // narrow passage of the 6-D space (one robot tucked in while the other passes).
+  if (play < 0) play = rng.uniform(0.04, 0.1);
+  const double nicheWidth =
+      std::max(extent(shapeA, &Vec2::x), extent(shapeB, &Vec2::x)) + play * size;
+  const double depth = std::max(hA, hB) + play * size;
   const double nicheX = rng.uniform(0.3, 0.7) * length - nicheWidth / 2;
   const double wall = size;
   Scene scene;

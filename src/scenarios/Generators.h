@@ -42,11 +42,13 @@ Scene randomPolygonsTwoRobots(uint64_t seed = 1);
 Scene carryTurnScene(uint64_t seed);
 
 /// Niche swap: two robots of random blocky shapes swap the ends of a corridor too narrow for
-/// them to pass each other; a niche in one wall, at a random place, is just large enough for one
-/// of them to wait in. Random per seed: the shapes, the corridor's width (room for either robot,
-/// not for both side by side) and length, the niche's place, width and depth. Robot 0 starts at the
-/// left end.
-Scene nicheSwapScene(uint64_t seed);
+/// them to pass each other; a niche in one wall, at a random place, fits either robot at angle 0
+/// with `play` (a share of the robots' size) to spare in width and depth, so one waits tucked in
+/// while the other passes. Random per seed: the shapes, the corridor's width (room for either
+/// robot, not for both side by side) and length, the niche's place, and the play (0.04-0.1,
+/// unless `play` >= 0 is given; 0.5 makes a roomy niche that sampling planners find at once).
+/// Robot 0 starts at the left end.
+Scene nicheSwapScene(uint64_t seed, double play = -1);
 
 /// Open clutter: one or two L-shaped robots (count, arm lengths and thickness from the seed)
 /// cross a square room among 20-30 random convex obstacles (3-7 vertices, placed uniformly,
