@@ -140,6 +140,62 @@ TEST(ScenarioNicheSwap, EverySeedIsSolvedThroughATightNiche) {
   EXPECT_EQ(sceneToJson(nicheSwapScene(4)), sceneToJson(nicheSwapScene(4)));
 }
 
+// Three robots: the waiting robot steps into the niche, the two others cross the corridor below
+// it one after the other (turning to angle 0 where they stand, going round by the rooms' open
+// middles), and the waiting robot steps back: a constructed 9-D path, certified on seeds 1-10.
+// No two fit the corridor side by side, and none can turn in it.
+TEST(ScenarioNicheThree, EverySeedIsSolvedWithTheThirdRobotWaitingInTheNiche) {
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    SCOPED_TRACE(seed);
+    const Scene s = nicheThreeScene(seed);
+    ASSERT_NO_THROW(parseScene(sceneToJson(s), "niche-three"));
+    ASSERT_EQ(s.robots.size(), 3u);
+    const CollisionChecker checker(s);
+    const double room = s.obstacles[0][0].x, x1 = s.obstacles[0][1].x;
+    const double y0 = s.obstacles[0][2].y, top = s.obstacles[1][0].y, width = top - y0;
+    const double nx0 = s.obstacles[1][1].x, nx1 = s.obstacles[2][0].x;
+    const double nicheTop = s.obstacles[3][0].y;
+    const double mid = y0 + width / 2;
+    std::vector<double> q;
+    for (const Robot& r : s.robots) q.insert(q.end(), {r.start.x, r.start.y, r.start.theta});
+    std::vector<Config> w{q};
+    auto move = [&](size_t robot, double x, double y, double theta) {
+      q[3 * robot] = x, q[3 * robot + 1] = y, q[3 * robot + 2] = theta;
+      w.push_back(q);
+    };
+    const Pose c = s.robots[2].start;
+    move(2, (nx0 + nx1) / 2, mid, 0);
+    move(2, (nx0 + nx1) / 2, (top + nicheTop) / 2, 0);
+    for (size_t r = 0; r < 2; ++r) {
+      const Pose a = s.robots[r].start, g = s.robots[r].goal;
+      move(r, a.x, a.y, 0);
+      move(r, room - 0.9, a.y, 0);
+      move(r, room - 0.9, mid, 0);
+      move(r, x1 + 0.9, mid, 0);
+      move(r, x1 + 0.9, g.y, 0);
+      move(r, g.x, g.y, 0);
+      move(r, g.x, g.y, g.theta);
+    }
+    move(2, (nx0 + nx1) / 2, mid, 0);
+    move(2, c.x, c.y, c.theta);
+    const PathCheckResult res = checkPath(s, checker, w);
+    EXPECT_TRUE(res.ok) << res.reason;
+    // Side by side, any two are taller than the corridor; turned, any is longer than it is wide.
+    for (size_t i = 0; i < 3; ++i) {
+      const auto [xlo, xhi] = shapeExtent(s.robots[i].shape, 0);
+      const auto [ylo, yhi] = shapeExtent(s.robots[i].shape, 1);
+      EXPECT_LT(width, std::hypot(xhi - xlo, yhi - ylo));
+      EXPECT_LT(yhi - ylo, width);
+      for (size_t j = i + 1; j < 3; ++j) {
+        const auto [jlo, jhi] = shapeExtent(s.robots[j].shape, 1);
+        EXPECT_LT(width, (yhi - ylo) + (jhi - jlo));
+      }
+    }
+  }
+  EXPECT_NE(sceneToJson(nicheThreeScene(4)), sceneToJson(nicheThreeScene(5)));
+  EXPECT_EQ(sceneToJson(nicheThreeScene(4)), sceneToJson(nicheThreeScene(4)));
+}
+
 // Doors: lined up with the door (angle 0) the robot slides through each wall, and turns in the
 // rooms' middles: a constructed path, certified on seeds 1-10. Across (a quarter turn) it does
 // not fit a door: it must line up.

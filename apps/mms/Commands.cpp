@@ -120,6 +120,8 @@ int scenario(const ScenarioArgs& a) {
     s = carryTurnScene(a.seed);
   else if (a.name == "niche-swap")
     s = nicheSwapScene(a.seed, a.slackGiven ? a.slack : -1);
+  else if (a.name == "niche-three")
+    s = nicheThreeScene(a.seed);
   else if (a.name == "open-clutter")
     s = openClutterScene(a.seed);
   else if (a.name == "bend")

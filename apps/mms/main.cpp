@@ -161,17 +161,19 @@ int main(int argc, char** argv) {
       "random-polygons (--seed), assembly-1 and assembly-2 (--slack), a random test scene "
       "(random: --seed, --robots, --obstacles), carry-turn (--seed: a gripper and the part it "
       "holds turn together in a tight chamber), niche-swap (--seed: two robots swap the ends "
-      "of a corridor with a niche), open-clutter (--seed: one or two L-shaped robots cross random "
+      "of a corridor with a niche), niche-three (--seed: two robots cross a corridor in which a "
+      "third "
+      "must wait in a niche), open-clutter (--seed: one or two L-shaped robots cross random "
       "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor) or doors "
       "(--seed: a long robot lines up with the doors of 1-3 thin walls)");
   scenarioCmd
       ->add_option("NAME", sa.name,
                    "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
-                   "carry-turn, niche-swap, open-clutter, bend or doors")
+                   "carry-turn, niche-swap, niche-three, open-clutter, bend or doors")
       ->required()
-      ->check(
-          CLI::IsMember({"pacman", "viking-helmet", "random-polygons", "assembly-1", "assembly-2",
-                         "random", "carry-turn", "niche-swap", "open-clutter", "bend", "doors"}));
+      ->check(CLI::IsMember({"pacman", "viking-helmet", "random-polygons", "assembly-1",
+                             "assembly-2", "random", "carry-turn", "niche-swap", "niche-three",
+                             "open-clutter", "bend", "doors"}));
   outputOption(scenarioCmd, sa.output, "Scene file to write");
   scenarioCmd
       ->add_option("--tightness", sa.tightness,

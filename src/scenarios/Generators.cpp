@@ -1,6 +1,7 @@
 #include "scenarios/Generators.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -280,6 +281,51 @@ Scene nicheSwapScene(uint64_t seed, double play) {
   b.start = {length - margin, y, 0};
   b.goal = {margin, y, 0};
   scene.robots = {a, b};
+  return scene;
+}
+
+Scene nicheThreeScene(uint64_t seed) {
+  Random rng(seed);
+  // Three rectangles, each too long to turn in the corridor, two too tall to pass side by side.
+  struct Box2 {
+    double length, height;
+  };
+  std::array<Box2, 3> box;
+  for (Box2& b : box) b = {rng.uniform(0.8, 1.1), rng.uniform(0.45, 0.6)};
+  std::array<double, 3> h{box[0].height, box[1].height, box[2].height};
+  std::sort(h.begin(), h.end());
+  const double width = rng.uniform(1.1 * h[2], 0.95 * (h[0] + h[1]));
+  const double room = rng.uniform(3, 4), length = rng.uniform(5, 8);
+  const double y0 = room / 2 - width / 2;  // the corridor's floor
+  // The niche, in the corridor's upper wall, fits the waiting robot (2) with `play` to spare.
+  const double play = rng.uniform(0.04, 0.1);
+  const double nicheWidth = box[2].length + play, depth = box[2].height + play;
+  const double nicheMid = room + length * rng.uniform(0.3, 0.7);
+  const double nx0 = nicheMid - nicheWidth / 2, nx1 = nicheMid + nicheWidth / 2;
+  Scene scene;
+  scene.name = "niche-three-" + std::to_string(seed);
+  scene.bounds = {0, 0, 2 * room + length, room};
+  const double x1 = room + length;
+  scene.obstacles = {rect(room, 0, x1, y0), rect(room, y0 + width, nx0, room),
+                     rect(nx1, y0 + width, x1, room), rect(nx0, y0 + width + depth, nx1, room)};
+  auto angle = [&] { return rng.uniform(-M_PI, M_PI); };
+  const char* names[3] = {"lower", "upper", "waiting"};
+  for (size_t i = 0; i < 3; ++i) {
+    Robot r;
+    r.name = names[i];
+    r.shape = rect(-box[i].length / 2, -box[i].height / 2, box[i].length / 2, box[i].height / 2);
+    scene.robots.push_back(std::move(r));
+  }
+  // Robots 0 and 1 cross from the left room to the right one; robot 2 starts and ends in the
+  // corridor, in the half the niche is not in (so it must travel to the niche and back).
+  scene.robots[0].start = {room / 3, room / 4, angle()};
+  scene.robots[1].start = {room / 3, 3 * room / 4, angle()};
+  scene.robots[0].goal = {x1 + 2 * room / 3, room / 4, angle()};
+  scene.robots[1].goal = {x1 + 2 * room / 3, 3 * room / 4, angle()};
+  const double margin = box[2].length / 2 + 0.1;
+  const double waitX = nicheMid < room + length / 2 ? rng.uniform(nx1 + margin, x1 - margin)
+                                                    : rng.uniform(room + margin, nx0 - margin);
+  scene.robots[2].start = scene.robots[2].goal = {waitX, y0 + width / 2, 0};
   return scene;
 }
 

@@ -50,6 +50,15 @@ Scene carryTurnScene(uint64_t seed);
 /// Robot 0 starts at the left end.
 Scene nicheSwapScene(uint64_t seed, double play = -1);
 
+/// Three robots and a niche (9-D): two rooms joined by a corridor; robots 0 and 1 cross from
+/// the left room to the right one, robot 2 starts and ends in the corridor, which has room for
+/// one robot (too narrow for two side by side, too narrow to turn in), so it must wait in a niche
+/// in the corridor's upper wall that fits it with 0.04-0.1 of its size to spare while the others
+/// pass. Random per seed: the three rectangles, the corridor's width and length, the rooms'
+/// size, the niche's place, robot 2's place on the corridor's other half, the crossing robots'
+/// start and goal angles.
+Scene nicheThreeScene(uint64_t seed);
+
 /// Open clutter: one or two L-shaped robots (count, arm lengths and thickness from the seed)
 /// cross a square room among 20-30 random convex obstacles (3-7 vertices, placed uniformly,
 /// overlaps allowed). Robot 0 goes from the left edge to the right, robot 1 the other way;
