@@ -11,6 +11,7 @@
 #include "mms/Io.h"
 #include "mms/Planner.h"
 #include "planner/Rounds.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 using namespace mms::test;
@@ -63,16 +64,16 @@ TEST(Registry, ParametersAreCheckedAgainstTheDeclarations) {
   EXPECT_THROW(makePlanner("astar", s), InputError);
 }
 
-TEST(Registry, MmsRefusesThreeRobotsWithOneLine) {
-  Scene s = loadScene(scenario("two-robots/niche-swap.json"));
-  Robot third = s.robots[0];
-  third.name = "third";
-  s.robots.push_back(third);
+TEST(Registry, MmsTakesAnyNumberOfRobotsAndRefusesNoneWithOneLine) {
+  const Scene three = nicheThreeScene(1);
+  EXPECT_NO_THROW(makePlanner("mms", three, {}, "three.json"));
+  Scene none = three;
+  none.robots.clear();
   try {
-    makePlanner("mms", s, {}, "three.json");
-    FAIL() << "three robots accepted";
+    makePlanner("mms", none, {}, "none.json");
+    FAIL() << "no robots accepted";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind("three.json: robots: 3 robots", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind("none.json: robots: none", 0), 0u) << e.what();
   }
 }
 

@@ -140,46 +140,36 @@ TEST(ScenarioNicheSwap, EverySeedIsSolvedThroughATightNiche) {
   EXPECT_EQ(sceneToJson(nicheSwapScene(4)), sceneToJson(nicheSwapScene(4)));
 }
 
-// Three robots: the waiting robot steps into the niche, the two others cross the corridor below
-// it one after the other (turning to angle 0 where they stand, going round by the rooms' open
-// middles), and the waiting robot steps back: a constructed 9-D path, certified on seeds 1-10.
-// No two fit the corridor side by side, and none can turn in it.
-TEST(ScenarioNicheThree, EverySeedIsSolvedWithTheThirdRobotWaitingInTheNiche) {
+// Three robots: the oncoming robot steps into the niche, the two others pass below it to the
+// corridor's right end, and it goes on to the left end: a constructed 9-D path, certified on
+// seeds 1-10. No two fit the corridor side by side and none can turn in it, and both ends are
+// dead ends, so the niche is needed.
+TEST(ScenarioNicheThree, EverySeedIsSolvedWithOneRobotWaitingInTheNiche) {
   for (uint64_t seed = 1; seed <= 10; ++seed) {
     SCOPED_TRACE(seed);
     const Scene s = nicheThreeScene(seed);
     ASSERT_NO_THROW(parseScene(sceneToJson(s), "niche-three"));
     ASSERT_EQ(s.robots.size(), 3u);
     const CollisionChecker checker(s);
-    const double room = s.obstacles[0][0].x, x1 = s.obstacles[0][1].x;
-    const double y0 = s.obstacles[0][2].y, top = s.obstacles[1][0].y, width = top - y0;
-    const double nx0 = s.obstacles[1][1].x, nx1 = s.obstacles[2][0].x;
-    const double nicheTop = s.obstacles[3][0].y;
-    const double mid = y0 + width / 2;
+    const double width = s.obstacles[0][0].y;  // the corridor's ceiling
+    const double nx0 = s.obstacles[0][1].x, nx1 = s.obstacles[1][0].x;
+    const double nicheTop = s.obstacles[2][0].y;
     std::vector<double> q;
     for (const Robot& r : s.robots) q.insert(q.end(), {r.start.x, r.start.y, r.start.theta});
     std::vector<Config> w{q};
-    auto move = [&](size_t robot, double x, double y, double theta) {
-      q[3 * robot] = x, q[3 * robot + 1] = y, q[3 * robot + 2] = theta;
+    auto move = [&](size_t robot, double x, double y) {
+      q[3 * robot] = x, q[3 * robot + 1] = y;
       w.push_back(q);
     };
-    const Pose c = s.robots[2].start;
-    move(2, (nx0 + nx1) / 2, mid, 0);
-    move(2, (nx0 + nx1) / 2, (top + nicheTop) / 2, 0);
-    for (size_t r = 0; r < 2; ++r) {
-      const Pose a = s.robots[r].start, g = s.robots[r].goal;
-      move(r, a.x, a.y, 0);
-      move(r, room - 0.9, a.y, 0);
-      move(r, room - 0.9, mid, 0);
-      move(r, x1 + 0.9, mid, 0);
-      move(r, x1 + 0.9, g.y, 0);
-      move(r, g.x, g.y, 0);
-      move(r, g.x, g.y, g.theta);
-    }
-    move(2, (nx0 + nx1) / 2, mid, 0);
-    move(2, c.x, c.y, c.theta);
+    const double mid = (nx0 + nx1) / 2;
+    move(2, mid, width / 2);
+    move(2, mid, (width + nicheTop) / 2);
+    for (const size_t r : {1, 0}) move(r, s.robots[r].goal.x, s.robots[r].goal.y);
+    move(2, mid, width / 2);
+    move(2, s.robots[2].goal.x, s.robots[2].goal.y);
     const PathCheckResult res = checkPath(s, checker, w);
     EXPECT_TRUE(res.ok) << res.reason;
+    EXPECT_EQ(w.back(), goalConfig(s));
     // Side by side, any two are taller than the corridor; turned, any is longer than it is wide.
     for (size_t i = 0; i < 3; ++i) {
       const auto [xlo, xhi] = shapeExtent(s.robots[i].shape, 0);
@@ -191,6 +181,9 @@ TEST(ScenarioNicheThree, EverySeedIsSolvedWithTheThirdRobotWaitingInTheNiche) {
         EXPECT_LT(width, (yhi - ylo) + (jhi - jlo));
       }
     }
+    // Robot 2 comes the other way: it starts right of the others and ends left of them.
+    EXPECT_GT(s.robots[2].start.x, s.robots[1].start.x);
+    EXPECT_LT(s.robots[2].goal.x, s.robots[1].goal.x);
   }
   EXPECT_NE(sceneToJson(nicheThreeScene(4)), sceneToJson(nicheThreeScene(5)));
   EXPECT_EQ(sceneToJson(nicheThreeScene(4)), sceneToJson(nicheThreeScene(4)));

@@ -1,10 +1,12 @@
-// "mms" behind the planner seam: MmsPlanner for one robot, TwoRobotPlanner for two, chosen by
-// the scene. Parameters are declared here once, with the defaults of the settings structs.
+// "mms" behind the planner seam: MmsPlanner for one robot, TwoRobotPlanner for two,
+// KRobotPlanner for three and more, chosen by the scene. Parameters are declared here once, with
+// the defaults of the settings structs.
 #include <memory>
 #include <type_traits>
 
 #include "api/Adapters.h"
 #include "mms/Errors.h"
+#include "planner/KRobotPlanner.h"
 #include "planner/MmsPlanner.h"
 #include "planner/TwoRobotPlanner.h"
 #include "util/Parallel.h"
@@ -76,7 +78,23 @@ PlanStatistics statisticsOf(const TwoRobotStats& s) {
   return p;
 }
 
-// An MMS result (MmsResult, TwoRobotResult) as the seam's result.
+PlanStatistics statisticsOf(const KRobotStats& s) {
+  const SubspaceStats& m = s.manifolds;
+  PlanStatistics p = commonStatistics(s, m,
+                                      {{"base_slices", s.baseSliceSeconds},
+                                       {"overlays", m.sliceSeconds},
+                                       {"lines", m.lineSeconds}});
+  p.counts.insert(p.counts.begin(), {{"subspaces", s.subspaces},
+                                     {"tuples", s.tuples},
+                                     {"greedy_moves", s.greedyMoves},
+                                     {"screened_poses", s.screenedPoses},
+                                     {"cross_edges", s.crossEdges},
+                                     {"path_subspaces", s.pathSubspaces}});
+  p.phases.insert(p.phases.begin() + 4, {"cross", s.crossSeconds});  // after connect
+  return p;
+}
+
+// An MMS result (MmsResult, TwoRobotResult, KRobotResult) as the seam's result.
 template <class Result>
 PlanResult planResultOf(const Result& r, const std::map<std::string, double>& parameters) {
   PlanResult out;
@@ -186,7 +204,22 @@ class TwoRobotMms : public Planner {
   std::map<std::string, double> parameters_;
 };
 
-// The settings both MMS planners share, from the parameters given (the rest keep the struct's
+class KRobotMms : public Planner {
+ public:
+  KRobotMms(const Scene& scene, const KRobotSettings& settings,
+            std::map<std::string, double> parameters)
+      : planner_(scene, settings), parameters_(std::move(parameters)) {}
+
+  PlanResult solve(const Termination& stop, const Progress& progress) override {
+    return planResultOf(planner_.solve(stop, progressOf<KRobotStats>(progress)), parameters_);
+  }
+
+ private:
+  KRobotPlanner planner_;
+  std::map<std::string, double> parameters_;
+};
+
+// The settings the MMS planners share, from the parameters given (the rest keep the struct's
 // defaults).
 template <class Settings>
 Settings settingsFrom(const PlannerParams& params, const std::vector<ParamSpec>& specs) {
@@ -224,20 +257,24 @@ std::unique_ptr<Planner> makeMms(const Scene& scene, const PlannerParams& params
                                       {"expand_share", s.expandShare},
                                       {"coupled", s.coupled ? 1.0 : 0.0}});
   }
-  throw InputError(source + ": robots: " + std::to_string(scene.robots.size()) +
-                   " robots; the mms planner handles scenes with one or two robots");
+  if (scene.robots.empty()) throw InputError(source + ": robots: none; the mms planner needs one");
+  const auto s = settingsFrom<KRobotSettings>(params, specs);
+  return std::make_unique<KRobotMms>(
+      scene, s,
+      std::map<std::string, double>{{"n_theta", double(s.nTheta)}, {"n_lines", double(s.nLines)}});
 }
 
 }  // namespace
 
-bool mmsTakes(const Scene& scene) { return scene.robots.size() == 1 || scene.robots.size() == 2; }
+bool mmsTakes(const Scene& scene) { return !scene.robots.empty(); }
 
 PlannerInfo mmsPlannerInfo() {
   PlannerInfo info;
   info.name = "mms";
   info.summary =
       "Motion planning via manifold samples: exact fixed-angle slices and fixed-position lines "
-      "(one robot), recursive MMS over fixings (two robots)";
+      "(one robot), recursive MMS over fixings (two robots), over tuples grown from reached "
+      "cells (three or more)";
   info.params = mmsParams();
   info.multiQuery = true;
   info.make = makeMms;

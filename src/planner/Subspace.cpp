@@ -47,6 +47,16 @@ void buildSlices(const SliceWorld& world, const std::vector<double>& thetas, uns
   }
 }
 
+Vec2 subspaceLinePoint(const std::vector<Slice>& base, const Box& b, Random& rng) {
+  auto uniform = [&] { return Vec2{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax)}; };
+  if (rng.uniform() < 0.5)
+    for (int attempt = 0; attempt < 20; ++attempt) {
+      const Vec2 p = uniform();
+      if (base[rng.below(base.size())].locate(p) >= 0) return p;
+    }
+  return uniform();
+}
+
 Scene withContactShapes(const Scene& scene, const CollisionChecker& checker) {
   Scene out = scene;
   for (Robot& r : out.robots) {

@@ -13,6 +13,7 @@
 #include "manifolds/OneRobot.h"
 #include "manifolds/Slice.h"
 #include "mms/Termination.h"
+#include "util/Random.h"
 
 namespace mms {
 
@@ -72,6 +73,11 @@ uint32_t addJoinedLine(Roadmap& roadmap, SubspaceStats& stats, std::vector<Line>
   roadmap.weave(weave, 0, id);
   return id;
 }
+
+/// Where a subspace of a robot with base slices `base` puts a random line: half of the points
+/// where the robot fits at some angle of its set (a free point of a random base slice, 20 tries),
+/// the rest uniform in `bounds`.
+Vec2 subspaceLinePoint(const std::vector<Slice>& base, const Box& bounds, Random& rng);
 
 class Subspace {
  public:

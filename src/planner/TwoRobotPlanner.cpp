@@ -222,14 +222,7 @@ void TwoRobotPlanner::sliceNarrowArcsNow() {
 }
 
 Vec2 TwoRobotPlanner::linePoint(size_t robot) {
-  const Box& b = scene_.bounds;
-  auto uniform = [&] { return Vec2{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)}; };
-  if (rng_.uniform() < 0.5)  // half where the robot fits at some angle, half uniform
-    for (int attempt = 0; attempt < 20; ++attempt) {
-      const Vec2 p = uniform();
-      if (base_[robot][rng_.below(base_[robot].size())].locate(p) >= 0) return p;
-    }
-  return uniform();
+  return subspaceLinePoint(base_[robot], scene_.bounds, rng_);
 }
 
 long TwoRobotPlanner::nodeFor(const Subspace& sub, const Fixing& f, bool knownFree) const {

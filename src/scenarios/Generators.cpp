@@ -286,46 +286,52 @@ Scene nicheSwapScene(uint64_t seed, double play) {
 
 Scene nicheThreeScene(uint64_t seed) {
   Random rng(seed);
-  // Three rectangles, each too long to turn in the corridor, two too tall to pass side by side.
-  struct Box2 {
+  // Three rectangles, each too long to turn in the corridor, any two too tall to pass side by
+  // side.
+  struct Size {
     double length, height;
   };
-  std::array<Box2, 3> box;
-  for (Box2& b : box) b = {rng.uniform(0.8, 1.1), rng.uniform(0.45, 0.6)};
+  std::array<Size, 3> box;
+  for (Size& b : box) b = {rng.uniform(0.8, 1.1), rng.uniform(0.45, 0.6)};
   std::array<double, 3> h{box[0].height, box[1].height, box[2].height};
   std::sort(h.begin(), h.end());
   const double width = rng.uniform(1.1 * h[2], 0.95 * (h[0] + h[1]));
-  const double room = rng.uniform(3, 4), length = rng.uniform(5, 8);
-  const double y0 = room / 2 - width / 2;  // the corridor's floor
-  // The niche, in the corridor's upper wall, fits the waiting robot (2) with `play` to spare.
+  const double length = rng.uniform(8, 12);
+  // The niche, in the upper wall, fits the largest robot with `play` to spare.
   const double play = rng.uniform(0.04, 0.1);
-  const double nicheWidth = box[2].length + play, depth = box[2].height + play;
-  const double nicheMid = room + length * rng.uniform(0.3, 0.7);
+  double longest = 0;
+  for (const Size& b : box) longest = std::max(longest, b.length);
+  const double nicheWidth = longest + play, depth = h[2] + play;
+  const double nicheMid = rng.uniform(3.5, length - 3.5);
   const double nx0 = nicheMid - nicheWidth / 2, nx1 = nicheMid + nicheWidth / 2;
+  const double top = width + depth + 1;
   Scene scene;
   scene.name = "niche-three-" + std::to_string(seed);
-  scene.bounds = {0, 0, 2 * room + length, room};
-  const double x1 = room + length;
-  scene.obstacles = {rect(room, 0, x1, y0), rect(room, y0 + width, nx0, room),
-                     rect(nx1, y0 + width, x1, room), rect(nx0, y0 + width + depth, nx1, room)};
-  auto angle = [&] { return rng.uniform(-M_PI, M_PI); };
-  const char* names[3] = {"lower", "upper", "waiting"};
+  scene.bounds = {0, 0, length, top};
+  scene.obstacles = {rect(0, width, nx0, top), rect(nx1, width, length, top),
+                     rect(nx0, width + depth, nx1, top)};
+  const char* names[3] = {"first", "second", "oncoming"};
   for (size_t i = 0; i < 3; ++i) {
     Robot r;
     r.name = names[i];
     r.shape = rect(-box[i].length / 2, -box[i].height / 2, box[i].length / 2, box[i].height / 2);
     scene.robots.push_back(std::move(r));
   }
-  // Robots 0 and 1 cross from the left room to the right one; robot 2 starts and ends in the
-  // corridor, in the half the niche is not in (so it must travel to the niche and back).
-  scene.robots[0].start = {room / 3, room / 4, angle()};
-  scene.robots[1].start = {room / 3, 3 * room / 4, angle()};
-  scene.robots[0].goal = {x1 + 2 * room / 3, room / 4, angle()};
-  scene.robots[1].goal = {x1 + 2 * room / 3, 3 * room / 4, angle()};
-  const double margin = box[2].length / 2 + 0.1;
-  const double waitX = nicheMid < room + length / 2 ? rng.uniform(nx1 + margin, x1 - margin)
-                                                    : rng.uniform(room + margin, nx0 - margin);
-  scene.robots[2].start = scene.robots[2].goal = {waitX, y0 + width / 2, 0};
+  // Robots 0 and 1 go from the corridor's left end to its right end, keeping their order; robot
+  // 2 the other way. Gaps of 0.1-0.3 between them and from the ends.
+  auto gap = [&] { return rng.uniform(0.1, 0.3); };
+  const double y = width / 2;
+  const double a0 = gap() + box[0].length / 2,
+               b0 = a0 + box[0].length / 2 + gap() + box[1].length / 2;
+  const double b1 = length - gap() - box[1].length / 2;
+  const double a1 = b1 - box[1].length / 2 - gap() - box[0].length / 2;
+  const double c0 = length - gap() - box[2].length / 2, c1 = gap() + box[2].length / 2;
+  scene.robots[0].start = {a0, y, 0};
+  scene.robots[0].goal = {a1, y, 0};
+  scene.robots[1].start = {b0, y, 0};
+  scene.robots[1].goal = {b1, y, 0};
+  scene.robots[2].start = {c0, y, 0};
+  scene.robots[2].goal = {c1, y, 0};
   return scene;
 }
 

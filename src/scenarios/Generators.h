@@ -50,13 +50,11 @@ Scene carryTurnScene(uint64_t seed);
 /// Robot 0 starts at the left end.
 Scene nicheSwapScene(uint64_t seed, double play = -1);
 
-/// Three robots and a niche (9-D): two rooms joined by a corridor; robots 0 and 1 cross from
-/// the left room to the right one, robot 2 starts and ends in the corridor, which has room for
-/// one robot (too narrow for two side by side, too narrow to turn in), so it must wait in a niche
-/// in the corridor's upper wall that fits it with 0.04-0.1 of its size to spare while the others
-/// pass. Random per seed: the three rectangles, the corridor's width and length, the rooms'
-/// size, the niche's place, robot 2's place on the corridor's other half, the crossing robots'
-/// start and goal angles.
+/// Three robots and a niche (9-D): a dead-end corridor, too narrow for any two robots side by
+/// side and for any robot to turn in; robots 0 and 1 go from its left end to its right end, robot
+/// 2 the other way, so one must wait in a niche in the upper wall (it fits the largest robot with
+/// 0.04-0.1 of its size to spare) while the others pass. Random per seed: the three rectangles,
+/// the corridor's width and length, the niche's place and play, the gaps at the ends.
 Scene nicheThreeScene(uint64_t seed);
 
 /// Open clutter: one or two L-shaped robots (count, arm lengths and thickness from the seed)
