@@ -136,3 +136,21 @@ TEST(KRobots, ScreenedGrowthPointsFindTheNicheWithLessWork) {
   }
   EXPECT_LT(2 * work[0], work[1]) << work[0] << " vs " << work[1];
 }
+
+// Discs (translating robots: one slice per subspace, no lines): round a block to each other's
+// places, and ten across an open room, with certified paths.
+TEST(KRobots, DiscsSwapRoundABlockAndCrossAnOpenRoom) {
+  std::vector<Scene> scenes;
+  for (uint64_t seed = 1; seed <= uint64_t(seedsToRun(3)); ++seed)
+    scenes.push_back(discsSwapScene(seed));
+  scenes.push_back(discsRoomScene(1));
+  for (const Scene& s : scenes) {
+    SCOPED_TRACE(s.name);
+    const KRobotResult r = plan(s, 1);
+    ASSERT_EQ(r.status, PlanStatus::Found);
+    const PathCheckResult c = checkPath(s, CollisionChecker(s), r.waypoints);
+    EXPECT_TRUE(c.ok) << c.reason;
+    EXPECT_EQ(r.stats.manifolds.lines, 0u);
+    EXPECT_EQ(r.stats.manifolds.slices, r.stats.subspaces);
+  }
+}

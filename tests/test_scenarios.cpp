@@ -189,6 +189,41 @@ TEST(ScenarioNicheThree, EverySeedIsSolvedWithOneRobotWaitingInTheNiche) {
   EXPECT_EQ(sceneToJson(nicheThreeScene(4)), sceneToJson(nicheThreeScene(4)));
 }
 
+// Discs: valid scenes of translating discs, free and apart at start and goal; round the block
+// each goes to where another starts; the same seed gives the same scene.
+TEST(ScenarioDiscs, SwapAndRoomScenesAreValidAndDeterministic) {
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    SCOPED_TRACE(seed);
+    for (const Scene& s : {discsSwapScene(seed), discsRoomScene(seed), discsRoomScene(seed, 16)}) {
+      ASSERT_NO_THROW(parseScene(sceneToJson(s), s.name));
+      const CollisionChecker checker(s);
+      for (size_t i = 0; i < s.robots.size(); ++i) {
+        EXPECT_EQ(s.robots[i].motion, Motion::Translate);
+        EXPECT_TRUE(checker.robotFree(i, s.robots[i].start));
+        EXPECT_TRUE(checker.robotFree(i, s.robots[i].goal));
+        for (size_t j = i + 1; j < s.robots.size(); ++j) {
+          EXPECT_TRUE(checker.robotsDisjoint(i, s.robots[i].start, j, s.robots[j].start));
+          EXPECT_TRUE(checker.robotsDisjoint(i, s.robots[i].goal, j, s.robots[j].goal));
+        }
+      }
+    }
+    const Scene swap = discsSwapScene(seed);
+    ASSERT_GE(swap.robots.size(), 4u);
+    ASSERT_LE(swap.robots.size(), 5u);
+    for (const Robot& r : swap.robots) {
+      size_t starts = 0;
+      for (const Robot& o : swap.robots)
+        starts += std::hypot(o.start.x - r.goal.x, o.start.y - r.goal.y) < 1e-9;
+      EXPECT_EQ(starts, 1u);
+    }
+    EXPECT_EQ(discsRoomScene(seed).robots.size(), 10u);
+    EXPECT_EQ(discsRoomScene(seed, 16).robots.size(), 16u);
+  }
+  EXPECT_EQ(sceneToJson(discsSwapScene(3)), sceneToJson(discsSwapScene(3)));
+  EXPECT_NE(sceneToJson(discsSwapScene(3)), sceneToJson(discsSwapScene(4)));
+  EXPECT_EQ(sceneToJson(discsRoomScene(3)), sceneToJson(discsRoomScene(3)));
+}
+
 // Doors: lined up with the door (angle 0) the robot slides through each wall, and turns in the
 // rooms' middles: a constructed path, certified on seeds 1-10. Across (a quarter turn) it does
 // not fit a door: it must line up.

@@ -105,6 +105,9 @@ int scenario(const ScenarioArgs& a) {
     throw InputError(std::string("--slack: ") + value + " is more than " + a.name +
                      "'s largest play, 0.15");
   }
+  if (a.name == "random" && a.robots > 2)
+    throw InputError("--robots: " + std::to_string(a.robots) +
+                     " robots; the random test scene has 1 or 2 (discs-room takes more)");
   Scene s;
   if (a.name == "pacman")
     s = pacmanScene(a.tightness);
@@ -122,6 +125,10 @@ int scenario(const ScenarioArgs& a) {
     s = nicheSwapScene(a.seed, a.slackGiven ? a.slack : -1);
   else if (a.name == "niche-three")
     s = nicheThreeScene(a.seed);
+  else if (a.name == "discs-swap")
+    s = discsSwapScene(a.seed);
+  else if (a.name == "discs-room")
+    s = discsRoomScene(a.seed, a.robots > 0 ? size_t(a.robots) : 10);
   else if (a.name == "open-clutter")
     s = openClutterScene(a.seed);
   else if (a.name == "bend")

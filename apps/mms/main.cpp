@@ -167,13 +167,15 @@ int main(int argc, char** argv) {
       "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor) or doors "
       "(--seed: a long robot lines up with the doors of 1-3 thin walls)");
   scenarioCmd
-      ->add_option("NAME", sa.name,
-                   "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
-                   "carry-turn, niche-swap, niche-three, open-clutter, bend or doors")
+      ->add_option(
+          "NAME", sa.name,
+          "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
+          "carry-turn, niche-swap, niche-three, discs-swap, discs-room, open-clutter, bend or "
+          "doors")
       ->required()
       ->check(CLI::IsMember({"pacman", "viking-helmet", "random-polygons", "assembly-1",
                              "assembly-2", "random", "carry-turn", "niche-swap", "niche-three",
-                             "open-clutter", "bend", "doors"}));
+                             "discs-swap", "discs-room", "open-clutter", "bend", "doors"}));
   outputOption(scenarioCmd, sa.output, "Scene file to write");
   scenarioCmd
       ->add_option("--tightness", sa.tightness,
@@ -182,8 +184,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 0.999));
   seedOption(scenarioCmd, sa.seed,
              "random-polygons, random and the generated families: the seed of the geometry");
-  scenarioCmd->add_option("--robots", sa.robots, "random: 1 or 2 robots (default: from the seed)")
-      ->check(CLI::Range(1, 2));
+  scenarioCmd
+      ->add_option("--robots", sa.robots,
+                   "random: 1 or 2 robots (default: from the seed); discs-room: how many discs "
+                   "(default 10, at most 16)")
+      ->check(CLI::Range(1, 16));
   scenarioCmd
       ->add_option("--obstacles", sa.obstacles,
                    "random: how many obstacles (default: from the seed)")

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 namespace mms {
@@ -423,6 +424,115 @@ Scene openClutterScene(uint64_t seed) {
       scene.obstacles.pop_back();  // a sliver: draw again
     else
       ++k;
+  }
+  return scene;
+}
+
+namespace {
+// A disc robot's shape: the regular 16-gon whose inscribed circle is the disc (as discopygal's
+// discs are imported, with fewer sides), about its centre.
+Ring discShape(double radius) {
+  constexpr int kSides = 16;
+  const double R = radius / std::cos(M_PI / kSides);
+  Ring r;
+  for (int i = 0; i < kSides; ++i) {
+    const double a = 2 * M_PI * i / kSides;
+    r.push_back({R * std::cos(a), R * std::sin(a)});
+  }
+  return r;
+}
+Robot discRobot(size_t i, double radius, Vec2 start, Vec2 goal) {
+  Robot r;
+  r.name = "disc-" + std::to_string(i);
+  r.motion = Motion::Translate;
+  r.shape = discShape(radius);
+  r.start = {start.x, start.y, 0};
+  r.goal = {goal.x, goal.y, 0};
+  return r;
+}
+}  // namespace
+
+Scene discsSwapScene(uint64_t seed) {
+  Random rng(seed);
+  const size_t n = 4 + rng.below(2);
+  const double r = rng.uniform(0.4, 0.6);
+  // A central block (a regular polygon), the discs on a ring around it, a square room around
+  // that: the band between block and walls is 4.15-4.6 radii wide, so two discs pass each other
+  // only just, and more easily in the room's corners.
+  const int sides = 5 + int(rng.below(4));
+  const double block = rng.uniform(1.5, 2.5), turn = rng.uniform(0, 2 * M_PI);
+  const double band = r * rng.uniform(4.15, 4.6), inner = r * rng.uniform(0.1, 0.4);
+  const double ring = block + inner + r, half = block + band;
+  Scene scene;
+  scene.name = "discs-swap-" + std::to_string(seed);
+  scene.bounds = {-half, -half, half, half};
+  Ring poly;
+  for (int i = 0; i < sides; ++i) {
+    const double a = turn + 2 * M_PI * i / sides;
+    poly.push_back({block * std::cos(a), block * std::sin(a)});
+  }
+  scene.obstacles.push_back(poly);
+  // Each disc goes `shift` places round the ring (to a place another disc starts at).
+  const size_t shift = 1 + rng.below(n - 1);
+  const double phase = rng.uniform(0, 2 * M_PI);
+  auto place = [&](size_t i) {
+    const double a = phase + 2 * M_PI * double(i) / double(n);
+    return Vec2{ring * std::cos(a), ring * std::sin(a)};
+  };
+  for (size_t i = 0; i < n; ++i)
+    scene.robots.push_back(discRobot(i, r, place(i), place((i + shift) % n)));
+  return scene;
+}
+
+Scene discsRoomScene(uint64_t seed, size_t count) {
+  Random rng(seed);
+  const double half = 1.6 * std::sqrt(double(count)) + 1;
+  Scene scene;
+  scene.name = "discs-room-" + std::to_string(seed);
+  scene.bounds = {-half, -half, half, half};
+  struct Disc {
+    Vec2 c;
+    double r;
+  };
+  std::vector<Disc> starts, goals;
+  auto clear = [](const std::vector<Disc>& kept, Vec2 c, double r) {
+    for (const Disc& d : kept)
+      if (std::hypot(c.x - d.c.x, c.y - d.c.y) < r + d.r + 0.05) return false;
+    return true;
+  };
+  auto place = [&](std::vector<Disc>& kept, double r) {
+    for (int attempt = 0; attempt < 10000; ++attempt) {
+      const Vec2 c{rng.uniform(-half + r + 0.05, half - r - 0.05),
+                   rng.uniform(-half + r + 0.05, half - r - 0.05)};
+      if (clear(kept, c, r)) {
+        kept.push_back({c, r});
+        return c;
+      }
+    }
+    throw std::logic_error("discs-room: no room for the discs");
+  };
+  std::vector<double> radii(count);
+  for (double& r : radii) r = rng.uniform(0.3, 0.5);
+  for (size_t i = 0; i < count; ++i) {
+    const Vec2 s = place(starts, radii[i]), g = place(goals, radii[i]);
+    scene.robots.push_back(discRobot(i, radii[i], s, g));
+  }
+  // A few obstacles clear of every start and goal.
+  std::vector<Disc> kept = starts;
+  kept.insert(kept.end(), goals.begin(), goals.end());
+  const int obstacles = 3 + int(rng.below(4));
+  for (int k = 0, attempts = 0; k < obstacles && attempts < 10000; ++attempts) {
+    const double radius = rng.uniform(0.5, 1.0);
+    const Vec2 c{rng.uniform(-half + radius, half - radius),
+                 rng.uniform(-half + radius, half - radius)};
+    if (!clear(kept, c, radius)) continue;
+    scene.obstacles.push_back(randomConvex(rng, c, radius, 3 + int(rng.below(5))));
+    if (std::abs(area(scene.obstacles.back())) < 0.05 * radius * radius) {
+      scene.obstacles.pop_back();
+    } else {
+      kept.push_back({c, radius});
+      ++k;
+    }
   }
   return scene;
 }

@@ -57,6 +57,16 @@ Scene nicheSwapScene(uint64_t seed, double play = -1);
 /// the corridor's width and length, the niche's place and play, the gaps at the ends.
 Scene nicheThreeScene(uint64_t seed);
 
+/// Discs swapping round a block: 4-5 translating discs of one radius (0.4-0.6) on a ring around
+/// a central regular polygon (5-8 sides) in a square room; each goes a random number of places
+/// round the ring, to where another starts. The band between the block and the walls is
+/// 4.15-4.6 radii wide: two discs pass each other only just. Random per seed: all of these.
+Scene discsSwapScene(uint64_t seed);
+
+/// `count` translating discs (radii 0.3-0.5) in an open square room sized for them, with 3-6
+/// random convex obstacles; starts and goals at random, clear of each other and the obstacles.
+Scene discsRoomScene(uint64_t seed, size_t count = 10);
+
 /// Open clutter: one or two L-shaped robots (count, arm lengths and thickness from the seed)
 /// cross a square room among 20-30 random convex obstacles (3-7 vertices, placed uniformly,
 /// overlaps allowed). Robot 0 goes from the left edge to the right, robot 1 the other way;
