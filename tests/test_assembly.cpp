@@ -3,6 +3,8 @@
 // against a brute-force flood fill with the collision checker, and the files it writes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <queue>
 #include <set>
 
@@ -82,6 +84,42 @@ TEST(CellSampling, PointsLieInTheirCell) {
     }
   EXPECT_GT(near, 0);
   EXPECT_GT(towards, 0);
+}
+
+// Round discs held side by side make cells whose boundary runs straight through some vertices
+// (edges split where overlaid curves crossed): no corner there, and a point "near" such a vertex
+// lies on the boundary, where no route in the cell can start. Points near vertices keep off the
+// boundary.
+TEST(CellSampling, PointsNearVerticesKeepOffTheBoundary) {
+  auto distance = [](Vec2 p, Vec2 a, Vec2 b) {
+    const Vec2 d = b - a;
+    const double len2 = d.x * d.x + d.y * d.y;
+    const double t =
+        len2 > 0 ? std::clamp(((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2, 0.0, 1.0) : 0;
+    return std::hypot(p.x - a.x - t * d.x, p.y - a.y - t * d.y);
+  };
+  double nearest = INFINITY;
+  int drawn = 0;
+  for (uint64_t seed = 1; seed <= 5; ++seed) {
+    const Scene s = discsSwapScene(seed);
+    const SliceWorld world(s, 0);
+    const Slice base(world, exact::rationalAngleNear(0, 30));
+    std::vector<MovedShape> held;
+    for (size_t r = 1; r < s.robots.size(); ++r)
+      held.push_back({r, 0, s.robots[r].shape, {s.robots[r].start.x, s.robots[r].start.y}});
+    const Slice slice(base, held);
+    Random rng(seed);
+    for (size_t c = 0; c < slice.fscCount(); ++c)
+      for (int k = 0; k < 400; ++k)
+        if (const auto p = samplePointNearVertex(slice, c, rng)) {
+          ++drawn;
+          for (const Ring& r : slice.cell(c))
+            for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+              nearest = std::min(nearest, distance(*p, r[j], r[i]));
+        }
+  }
+  EXPECT_GT(drawn, 1000);
+  EXPECT_GT(nearest, 1e-9);
 }
 
 TEST(Scenarios, AssemblyFilesMatchTheGeneratorAndValidate) {

@@ -1,9 +1,14 @@
 // SVG pictures: well-formed, drawn where the scene says, readable by a standard renderer.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "Support.h"
 #include "io/SceneIO.h"
+#include "render/HtmlViewer.h"
+#include "render/Palette.h"
 #include "render/SvgRenderer.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 using namespace mms::test;
@@ -68,4 +73,41 @@ TEST(Render, BadPathLeavesNoOutputFile) {
                            quote(dir.file("p.json", "{}")) + " -o " + quote(out));
   EXPECT_EQ(r.code, 2);
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// Many robots: each has a colour of its own (traces, the animated robot) and its name in a legend
+// above the scene, in the SVG and in the viewer; one robot needs no legend.
+TEST(Render, EachRobotHasItsColourAndItsNameInALegend) {
+  const Scene s = discsRoomScene(2, 12);
+  Path p;
+  p.waypoints = {startConfig(s), goalConfig(s)};
+  const std::string svg = renderSvg(s, &p);
+  const size_t legend = svg.find("<g id=\"legend\"");
+  ASSERT_NE(legend, std::string::npos);
+  std::set<std::string> colours;
+  for (size_t i = 0; i < s.robots.size(); ++i) {
+    colours.insert(robotColour(i));
+    EXPECT_NE(svg.find(">" + s.robots[i].name + "</text>", legend), std::string::npos) << i;
+    EXPECT_NE(svg.find("<polyline fill=\"none\" stroke=\"" + std::string(robotColour(i))),
+              std::string::npos)
+        << i;
+    EXPECT_NE(svg.find("<polygon fill=\"" + std::string(robotColour(i))), std::string::npos) << i;
+  }
+  EXPECT_EQ(colours.size(), s.robots.size());
+  // The legend wraps: twelve names do not fit one row of the picture.
+  std::set<std::string> rows;
+  const std::string block = svg.substr(legend, svg.find("</g>", legend) - legend);
+  for (size_t at = block.find("<rect"); at != std::string::npos; at = block.find("<rect", at + 1)) {
+    const size_t y = block.find(" y=\"", at) + 4;
+    rows.insert(block.substr(y, block.find('"', y) - y));
+  }
+  EXPECT_GT(rows.size(), 1u);
+  const std::string html = renderHtmlViewer(s, &p);
+  for (size_t i = 0; i < s.robots.size(); ++i) {
+    EXPECT_NE(html.find(std::string("background:") + robotColour(i)), std::string::npos) << i;
+    EXPECT_NE(html.find(">" + s.robots[i].name + "</span>"), std::string::npos) << i;
+  }
+  const Scene one = loadScene(scenario("one-robot/bar-slot.json"));
+  EXPECT_EQ(renderSvg(one, nullptr).find("id=\"legend\""), std::string::npos);
+  EXPECT_EQ(renderHtmlViewer(one, nullptr).find("id=\"legend\""), std::string::npos);
 }

@@ -49,6 +49,12 @@ std::optional<Vec2> samplePointNearVertex(const Slice& slice, size_t cell, Rando
     const Ring& r = rings[ring];
     const Vec2 v = r[k], prev = r[(k + r.size() - 1) % r.size()], next = r[(k + 1) % r.size()];
     const double s = rng.uniform(0, 0.5), t = rng.uniform(0, 0.5);
+    // A vertex where the boundary runs straight on (an edge split where a curve of the overlay
+    // crossed it) is no corner: every point drawn there lies on the boundary itself, inside the
+    // exact cell or not by a rounding error, and no route can start there.
+    const Vec2 a = prev - v, b = next - v;
+    if (std::fabs(a.x * b.y - a.y * b.x) <= 1e-9 * std::hypot(a.x, a.y) * std::hypot(b.x, b.y))
+      continue;
     const Vec2 p = v + s * (prev - v) + t * (next - v);
     if (slice.locate(p) == int(cell)) return p;
   }

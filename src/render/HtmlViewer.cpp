@@ -1,6 +1,7 @@
 #include "render/HtmlViewer.h"
 
 #include "io/SceneIO.h"
+#include "render/Palette.h"
 #include "util/Markup.h"
 
 namespace mms {
@@ -17,7 +18,7 @@ const cv = document.getElementById('view');
 cv.width = W; cv.height = H; cv.style.width = W + 'px'; cv.style.height = H + 'px';
 const g = cv.getContext('2d');
 const px = p => [PAD + (p[0] - B[0]) * S, PAD + (B[3] - p[1]) * S];
-const COLOURS = ['#e8710a', '#7b1fa2', '#00838f', '#c62828'];
+const COLOURS = D.colours;
 const way = D.waypoints || [];
 const radius = D.robots.map(r => Math.max(...r.shape.map(v => Math.hypot(v[0], v[1]))));
 // Cumulative durations: a segment takes as long as its fastest-moving robot point needs.
@@ -133,6 +134,8 @@ std::string renderHtmlViewer(const Scene& scene, const Path* path) {
   nlohmann::json d = sceneToJson(scene);
   d["canvasWidth"] = kViewerCanvasWidth;
   d["pad"] = kViewerPad;
+  d["colours"] = nlohmann::json::array();
+  for (size_t i = 0; i < scene.robots.size(); ++i) d["colours"].push_back(robotColour(i));
   if (path) {
     d["waypoints"] = path->waypoints;
     if (path->extra.contains("roadmap")) d["roadmap"] = path->extra["roadmap"];
@@ -161,6 +164,15 @@ std::string renderHtmlViewer(const Scene& scene, const Path* path) {
   html += escapeMarkup(title) +
           ": obstacles blue, robots green at the start and red at the goal (outlines). "
           "Link to a moment with #t=0.5.</p>\n";
+  if (scene.robots.size() >= 2) {
+    html += "<p id=\"legend\" style=\"padding:0 10px\">";
+    for (size_t i = 0; i < scene.robots.size(); ++i)
+      html +=
+          std::string("<span style=\"display:inline-block;margin-right:14px\">") +
+          "<span style=\"display:inline-block;width:12px;height:12px;background:" + robotColour(i) +
+          ";margin-right:5px\"></span>" + escapeMarkup(scene.robots[i].name) + "</span>";
+    html += "</p>\n";
+  }
   html += "<script id=\"mms-data\" type=\"application/json\">" + data + "</script>\n";
   html += "<script>" + std::string(kScript) + "</script>\n</body>\n</html>\n";
   return html;

@@ -121,8 +121,7 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
       if (usable(x, y)) pts << fx(x) << "," << fy(y) << " ";
     if (s.line)
       svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.6\""
-          << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << " points=\"" << pts.str()
-          << "\"/>\n";
+          << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << " points=\"" << pts.str() << "\"/>\n";
     for (size_t k = 0; k < s.points.size(); ++k) {
       const auto [x, y] = s.points[k];
       if (!usable(x, y)) continue;
@@ -133,8 +132,8 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
         svg << "<path d=\"M" << fx(x) - 4 << "," << fy(y) - 4 << "l8,8m0,-8l-8,8\" stroke=\""
             << s.colour << "\" stroke-width=\"2\"/>\n";
       else if (s.markers)
-        svg << "<circle cx=\"" << fx(x) << "\" cy=\"" << fy(y) << "\" r=\"2.6\" fill=\""
-            << s.colour << "\"/>\n";
+        svg << "<circle cx=\"" << fx(x) << "\" cy=\"" << fy(y) << "\" r=\"2.6\" fill=\"" << s.colour
+            << "\"/>\n";
       if (k < s.labels.size() && !s.labels[k].empty())
         svg << "<text x=\"" << fx(x) << "\" y=\"" << fy(y) - 8 - 10 * double(i % 3)
             << "\" text-anchor=\"middle\" font-size=\"9\" fill=\"" << s.colour << "\">"

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "geometry/PolygonOps.h"
+#include "render/Palette.h"
 #include "util/Markup.h"
 
 namespace mms {
@@ -50,14 +51,36 @@ Pose poseAtEffort(const Path& path, const std::vector<double>& acc, size_t robot
   return {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), a.theta + s * (b.theta - a.theta)};
 }
 
-const char* kTraceColours[] = {"#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf", "#bcbd22"};
+// The legend's rows: each robot's colour and name, wrapped to the picture's width (a rough
+// 7 px per character of the 12 px font).
+struct LegendItem {
+  double x, y;
+  size_t robot;
+};
+std::vector<LegendItem> legendLayout(const Scene& scene, double left, double right, double top) {
+  std::vector<LegendItem> items;
+  double x = left, y = top;
+  for (size_t i = 0; i < scene.robots.size(); ++i) {
+    const double w = 18 + 7.0 * double(scene.robots[i].name.size()) + 14;
+    if (x + w > right && x > left) x = left, y += 18;
+    items.push_back({x, y, i});
+    x += w;
+  }
+  return items;
+}
 
 }  // namespace
 
 std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o) {
   const Box& b = scene.bounds;
   const double extent = std::max(b.width(), b.height());
-  const double margin = 20, titleH = scene.name.empty() ? 0 : 24;
+  const double margin = 20, nameH = scene.name.empty() ? 0 : 24;
+  // With two robots or more, a legend under the name: each robot's colour and name.
+  const double legendTop = margin + nameH + 10;  // the first row's baseline
+  const std::vector<LegendItem> legend =
+      scene.robots.size() >= 2 ? legendLayout(scene, margin, o.widthPx - margin, legendTop)
+                               : std::vector<LegendItem>{};
+  const double titleH = nameH + (legend.empty() ? 0 : legend.back().y - legendTop + 18);
   const double scale = (o.widthPx - 2 * margin) / b.width();
   const double heightPx = b.height() * scale + 2 * margin + titleH;
   const double stroke = extent / 400;
@@ -71,6 +94,15 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
     svg << "<text x=\"" << fmt(margin) << "\" y=\"" << fmt(margin + 8)
         << "\" font-family=\"sans-serif\" font-size=\"16\">" << escapeMarkup(scene.name)
         << "</text>\n";
+  if (!legend.empty()) {
+    svg << "<g id=\"legend\" font-family=\"sans-serif\" font-size=\"12\">\n";
+    for (const LegendItem& it : legend)
+      svg << "<rect x=\"" << fmt(it.x) << "\" y=\"" << fmt(it.y - 10) << "\" width=\"12\" "
+          << "height=\"12\" fill=\"" << robotColour(it.robot) << "\"/><text x=\"" << fmt(it.x + 16)
+          << "\" y=\"" << fmt(it.y) << "\">" << escapeMarkup(scene.robots[it.robot].name)
+          << "</text>\n";
+    svg << "</g>\n";
+  }
   // World coordinates: y up, as in the scene file.
   svg << "<g transform=\"translate(" << fmt(margin) << " " << fmt(heightPx - margin) << ") scale("
       << fmt(scale) << " " << fmt(-scale) << ") translate(" << fmt(-b.xmin) << " " << fmt(-b.ymin)
@@ -108,7 +140,7 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
     const double total = acc.back();
     // Traces of the reference points.
     for (size_t i = 0; i < k; ++i) {
-      svg << "<polyline fill=\"none\" stroke=\"" << kTraceColours[i % 6] << "\" stroke-width=\""
+      svg << "<polyline fill=\"none\" stroke=\"" << robotColour(i) << "\" stroke-width=\""
           << fmt(stroke) << "\" stroke-dasharray=\"" << fmt(3 * stroke) << " " << fmt(2 * stroke)
           << "\" points=\"";
       for (const Config& q : path->waypoints)
@@ -167,8 +199,9 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
           << "<g transform=\"rotate(" << fmt(p0.theta * 180 / M_PI) << ")\">"
           << "<animateTransform attributeName=\"transform\" type=\"rotate\" values=\"" << turns
           << "\" " << timing << "/>\n"
-          << "<polygon fill=\"#f2b01e\" fill-opacity=\"0.9\" stroke=\"#6b4e00\" stroke-width=\""
-          << fmt(stroke) << "\" points=\"" << points(scene.robots[i].shape) << "\"/>\n</g></g>\n";
+          << "<polygon fill=\"" << (k >= 2 ? robotColour(i) : "#f2b01e")
+          << "\" fill-opacity=\"0.9\" stroke=\"#333\" stroke-width=\"" << fmt(stroke)
+          << "\" points=\"" << points(scene.robots[i].shape) << "\"/>\n</g></g>\n";
     }
     svg << "</g>\n";
   }

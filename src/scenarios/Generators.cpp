@@ -517,20 +517,26 @@ Scene discsRoomScene(uint64_t seed, size_t count) {
     const Vec2 s = place(starts, radii[i]), g = place(goals, radii[i]);
     scene.robots.push_back(discRobot(i, radii[i], s, g));
   }
-  // A few obstacles clear of every start and goal.
+  // A few obstacles clear of every start and goal, and apart from each other and from the
+  // walls by more than the widest disc: no disc is walled in, its free space among the
+  // obstacles is one piece.
   std::vector<Disc> kept = starts;
   kept.insert(kept.end(), goals.begin(), goals.end());
+  std::vector<Disc> placed;
+  const double gap = 2 * 0.5 + 0.1;
   const int obstacles = 3 + int(rng.below(4));
   for (int k = 0, attempts = 0; k < obstacles && attempts < 10000; ++attempts) {
     const double radius = rng.uniform(0.5, 1.0);
-    const Vec2 c{rng.uniform(-half + radius, half - radius),
-                 rng.uniform(-half + radius, half - radius)};
-    if (!clear(kept, c, radius)) continue;
+    const double edge = half - radius - gap;
+    if (edge <= 0) break;
+    const Vec2 c{rng.uniform(-edge, edge), rng.uniform(-edge, edge)};
+    if (!clear(kept, c, radius) || !clear(placed, c, radius + gap)) continue;
     scene.obstacles.push_back(randomConvex(rng, c, radius, 3 + int(rng.below(5))));
     if (std::abs(area(scene.obstacles.back())) < 0.05 * radius * radius) {
       scene.obstacles.pop_back();
     } else {
       kept.push_back({c, radius});
+      placed.push_back({c, radius});
       ++k;
     }
   }

@@ -64,7 +64,8 @@ Scene nicheThreeScene(uint64_t seed);
 Scene discsSwapScene(uint64_t seed);
 
 /// `count` translating discs (radii 0.3-0.5) in an open square room sized for them, with 3-6
-/// random convex obstacles; starts and goals at random, clear of each other and the obstacles.
+/// random convex obstacles, apart from each other and from the walls by more than a disc's
+/// width; starts and goals at random, clear of each other and the obstacles.
 Scene discsRoomScene(uint64_t seed, size_t count = 10);
 
 /// Open clutter: one or two L-shaped robots (count, arm lengths and thickness from the seed)
