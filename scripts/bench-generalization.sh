@@ -4,7 +4,8 @@
 # PRM, PRM + bridge, RRT-Connect and KPIECE1 with default parameters, in one `mms bench` run.
 # Tune on the tuning seeds (1-10), report on the fresh ones (100-119), which nobody looked at
 # while tuning.
-# Usage: scripts/bench-generalization.sh tuning|fresh [OUTPUT_DIR] (default bench-generalization-SET)
+# Usage: scripts/bench-generalization.sh tuning|fresh|fresh2 [OUTPUT_DIR] (default
+# bench-generalization-SET); fresh2 is seeds 200-219, for when a fresh seed had to be looked at.
 # Environment: LIMIT (seconds per run, default 10), JOBS (cores to fill, default 2; an auto run
 # takes both), FAMILIES (default: all below), PLANNERS (default: the six above).
 # It writes OUTPUT_DIR/summary.md: per family and planner, the median over seeds (a failure
@@ -17,7 +18,8 @@ set_name=${1:-}
 case "$set_name" in
   tuning) seeds=$(seq 1 10) ;;
   fresh) seeds=$(seq 100 119) ;;
-  *) echo "usage: scripts/bench-generalization.sh tuning|fresh [OUTPUT_DIR]" >&2; exit 2 ;;
+  fresh2) seeds=$(seq 200 219) ;;  # a second fresh set, once the first has been looked at
+  *) echo "usage: scripts/bench-generalization.sh tuning|fresh|fresh2 [OUTPUT_DIR]" >&2; exit 2 ;;
 esac
 out=${2:-bench-generalization-$set_name}
 limit=${LIMIT:-10}

@@ -307,25 +307,16 @@ KRobotResult KRobotPlanner::solveRounds(const Termination& stop,
     target *= 2;
     for (size_t r = 0; r < k_; ++r)
       if (!translates_[r]) {
-        std::vector<double> thetas(sequenceAngles_[r]);
-        for (double& t : thetas) t = angles_[r]->next();
+        const std::vector<double> thetas = angles_[r]->take(sequenceAngles_[r]);
         sequenceAngles_[r] *= 2;
         addAngles(r, thetas, stop);
       }
     return true;
   };
   RoundsOutcome o = runRounds(h, roadmap_, size_t(from_), size_t(to_), stop, stats_);
-  result.certificate = o.motion.certificate;
-  if (o.end == RoundsOutcome::End::Found) {
-    stats_.pathCells = o.nodes.size();
-    const auto used = roadmap_.footprint(o.nodes);
-    stats_.pathManifolds = used.manifolds;
-    stats_.pathSubspaces = used.groups;
-    result.waypoints = std::move(o.motion.waypoints);
-    return finish(result, PlanStatus::Found);
-  }
-  return finish(result, o.end == RoundsOutcome::End::Cancelled ? PlanStatus::Cancelled
-                                                               : PlanStatus::NotFound);
+  const PlanStatus status =
+      recordOutcome(o, roadmap_, stats_, result.waypoints, result.certificate);
+  return finish(result, status);
 }
 
 }  // namespace mms

@@ -16,6 +16,12 @@ Scene singleRobotScene(const Scene& scene, size_t robot) {
   return s;
 }
 
+std::vector<double> AngleSequence::take(size_t n) {
+  std::vector<double> out(n);
+  for (double& t : out) t = next();
+  return out;
+}
+
 double AngleSequence::next() {
   const size_t k = count_++;
   double fraction;

@@ -48,6 +48,8 @@ class AngleSequence {
  public:
   AngleSequence(size_t n, double shift) : n_(std::max<size_t>(1, n)), shift_(shift) {}
   double next();
+  /// The next n angles.
+  std::vector<double> take(size_t n);
 
  private:
   size_t n_, count_ = 0;

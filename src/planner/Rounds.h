@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "graph/Roadmap.h"
+#include "mms/Planner.h"
 #include "mms/Termination.h"
 #include "path/Motion.h"
 
@@ -78,6 +79,24 @@ RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from
     searchEarly = true;
     ++stats.rounds;
   }
+}
+
+/// A finished run of rounds in a planner's result: the last candidate's certificate; when
+/// found, the graph path's size and footprint in `stats` and the certified waypoints. Returns
+/// the run's status.
+template <class Stats>
+PlanStatus recordOutcome(RoundsOutcome& o, const Roadmap& roadmap, Stats& stats,
+                         std::vector<Config>& waypoints, PathCheckResult& certificate) {
+  certificate = o.motion.certificate;
+  if (o.end == RoundsOutcome::End::Found) {
+    stats.pathCells = o.nodes.size();
+    const auto used = roadmap.footprint(o.nodes);
+    stats.pathManifolds = used.manifolds;
+    stats.pathSubspaces = used.groups;
+    waypoints = std::move(o.motion.waypoints);
+    return PlanStatus::Found;
+  }
+  return o.end == RoundsOutcome::End::Cancelled ? PlanStatus::Cancelled : PlanStatus::NotFound;
 }
 
 }  // namespace mms

@@ -359,8 +359,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     target *= 2;
     for (size_t r = 0; r < 2; ++r)
       if (!translates_[r]) {
-        std::vector<double> thetas(sequenceAngles_[r]);
-        for (double& t : thetas) t = angles_[r]->next();
+        const std::vector<double> thetas = angles_[r]->take(sequenceAngles_[r]);
         sequenceAngles_[r] *= 2;
         addAngles(r, thetas, stop);
       }
@@ -368,17 +367,9 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     return true;
   };
   RoundsOutcome o = runRounds(h, roadmap_, size_t(from), size_t(to), stop, stats_);
-  result.certificate = o.motion.certificate;
-  if (o.end == RoundsOutcome::End::Found) {
-    stats_.pathCells = o.nodes.size();
-    const auto used = roadmap_.footprint(o.nodes);
-    stats_.pathManifolds = used.manifolds;
-    stats_.pathSubspaces = used.groups;
-    result.waypoints = std::move(o.motion.waypoints);
-    return finish(result, PlanStatus::Found);
-  }
-  return finish(result, o.end == RoundsOutcome::End::Cancelled ? PlanStatus::Cancelled
-                                                               : PlanStatus::NotFound);
+  const PlanStatus status =
+      recordOutcome(o, roadmap_, stats_, result.waypoints, result.certificate);
+  return finish(result, status);
 }
 
 }  // namespace mms
