@@ -6,6 +6,7 @@
 
 #include "Support.h"
 #include "check/PathChecker.h"
+#include "io/SceneIO.h"
 #include "planner/KRobotPlanner.h"
 #include "scenarios/Generators.h"
 
@@ -153,4 +154,32 @@ TEST(KRobots, DiscsSwapRoundABlockAndCrossAnOpenRoom) {
     EXPECT_EQ(r.stats.manifolds.lines, 0u);
     EXPECT_EQ(r.stats.manifolds.slices, r.stats.subspaces);
   }
+}
+
+// Rigid and translating robots mixed: the oncoming robot of the niche scene only translates (it
+// never needs to turn), the two others rotate.
+TEST(KRobots, RigidAndTranslatingRobotsMixed) {
+  Scene s = nicheThreeScene(3);
+  s.robots[2].motion = Motion::Translate;
+  const KRobotResult r = plan(s, 2);
+  ASSERT_EQ(r.status, PlanStatus::Found);
+  const PathCheckResult c = checkPath(s, CollisionChecker(s), r.waypoints);
+  EXPECT_TRUE(c.ok) << c.reason;
+  for (const Config& q : r.waypoints) EXPECT_EQ(q[8], s.robots[2].start.theta);
+}
+
+// A scene of twelve discs goes out to discopygal's format and back, and the k-robot planner
+// plans the scene read back (through the command line, as a user would), with a certified path.
+TEST(KRobots, ManyDiscsRoundTripThroughDiscopygalAndPlan) {
+  TempDir dir;
+  const std::string scene = dir.path("discs.json"), dpg = dir.path("discs.dpg.json"),
+                    path = dir.path("p.json");
+  saveScene(discsRoomScene(4, 12), scene);
+  ASSERT_EQ(runMms("export " + quote(scene) + " --to discopygal -q -o " + quote(dpg)).code, 0);
+  const Outcome r =
+      runMms("plan " + quote(dpg) + " --planner mms -q --time-limit 60 -o " + quote(path));
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const Outcome c = runMms("check " + quote(dpg) + " " + quote(path));
+  EXPECT_EQ(c.code, 0) << c.out << c.err;
+  EXPECT_NE(c.out.find("certified"), std::string::npos) << c.out;
 }
