@@ -125,26 +125,28 @@ std::vector<ParamSpec> mmsParams() {
   };
   return {
       {"threads", Type::Integer, 0, 256, double(one.threads),
-       "Threads that build slices (0: all cores); same seed, same path whatever the number "
-       "(default " +
+       "Threads that build slices (0: all cores; three robots or more: one); same seed, same "
+       "path whatever the number (default " +
            formatNumber(one.threads) + ")"},
       {"n-theta", Type::Integer, 1, 1e6, double(one.nTheta),
        "Angles sampled per robot (n_theta). One robot: slices in the first round, doubling each "
-       "round. Two robots: each robot's angle set (default " +
+       "round. Two robots or more: each robot's angle set (default " +
            both(double(one.nTheta), double(two.nTheta)) + ")"},
       {"n-lines", Type::Integer, 1, 1e7, double(one.nLines),
        "Lines (fixed positions, n_l). One robot: in the first round, doubling each round. Two "
-       "robots: per subspace (default " +
+       "robots or more: per subspace (default " +
            both(double(one.nLines), double(two.nLines)) + ")"},
       {"n-fixings", Type::Integer, 1, 1e6, double(two.nFixings),
-       "Two robots: fixings per robot in the first round (n_f), doubling each round (default " +
+       "Two robots only: fixings per robot in the first round (n_f), doubling each round "
+       "(default " +
            formatNumber(double(two.nFixings)) + ")"},
       {"expand-share", Type::Real, 0, 1, two.expandShare,
-       "Two robots: share of fixings drawn from free-space cells already reached from the start "
+       "Two robots only: share of fixings drawn from free-space cells already reached from the "
+       "start "
        "or goal; the rest are uniform (default " +
            formatNumber(two.expandShare) + ")"},
       {"coupled", Type::Integer, 0, 1, two.coupled ? 1.0 : 0.0,
-       "Two robots: 1 builds compound slices and lines in which the pair keeps its start "
+       "Two robots only: 1 builds compound slices and lines in which the pair keeps its start "
        "relative pose and moves as one rigid body (carry and turn together), when start and goal "
        "share it; 0 does not (default " +
            formatNumber(two.coupled ? 1.0 : 0.0) + ")"},
