@@ -142,8 +142,7 @@ std::vector<ParamSpec> mmsParams() {
            formatNumber(double(two.nFixings)) + ")"},
       {"expand-share", Type::Real, 0, 1, two.expandShare,
        "Two robots only: share of fixings drawn from free-space cells already reached from the "
-       "start "
-       "or goal; the rest are uniform (default " +
+       "start or goal; the rest are uniform (default " +
            formatNumber(two.expandShare) + ")"},
       {"coupled", Type::Integer, 0, 1, two.coupled ? 1.0 : 0.0,
        "Two robots only: 1 builds compound slices and lines in which the pair keeps its start "
@@ -191,35 +190,24 @@ class OneRobotMms : public Planner {
   std::map<std::string, double> parameters_;
 };
 
-class TwoRobotMms : public Planner {
+// A two- or k-robot MMS planner behind the seam (one query: its start and goal are the scene's).
+template <class P, class Settings, class Stats>
+class ManyRobotMms : public Planner {
  public:
-  TwoRobotMms(const Scene& scene, const TwoRobotSettings& settings,
-              std::map<std::string, double> parameters)
+  ManyRobotMms(const Scene& scene, const Settings& settings,
+               std::map<std::string, double> parameters)
       : planner_(scene, settings), parameters_(std::move(parameters)) {}
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
-    return planResultOf(planner_.solve(stop, progressOf<TwoRobotStats>(progress)), parameters_);
+    return planResultOf(planner_.solve(stop, progressOf<Stats>(progress)), parameters_);
   }
 
  private:
-  TwoRobotPlanner planner_;
+  P planner_;
   std::map<std::string, double> parameters_;
 };
-
-class KRobotMms : public Planner {
- public:
-  KRobotMms(const Scene& scene, const KRobotSettings& settings,
-            std::map<std::string, double> parameters)
-      : planner_(scene, settings), parameters_(std::move(parameters)) {}
-
-  PlanResult solve(const Termination& stop, const Progress& progress) override {
-    return planResultOf(planner_.solve(stop, progressOf<KRobotStats>(progress)), parameters_);
-  }
-
- private:
-  KRobotPlanner planner_;
-  std::map<std::string, double> parameters_;
-};
+using TwoRobotMms = ManyRobotMms<TwoRobotPlanner, TwoRobotSettings, TwoRobotStats>;
+using KRobotMms = ManyRobotMms<KRobotPlanner, KRobotSettings, KRobotStats>;
 
 // The settings the MMS planners share, from the parameters given (the rest keep the struct's
 // defaults).

@@ -145,14 +145,12 @@ void KRobotPlanner::towardsOtherSide(Tuple t, bool fromStart, const Termination&
 // cells than the obstacles alone do: it cuts none of their passages (waits in a niche, not
 // across the corridor). One overlay per other robot: far cheaper than a subspace.
 bool KRobotPlanner::leavesRoom(size_t robot, const Pose& p) {
-  const MovedShape held{
-      robot, p.theta, placedRing(contactScene_.robots[robot].shape, {0, 0, p.theta}), {p.x, p.y}};
+  const MovedShape held = heldShape(contactScene_, robot, p);
   const TimeCharge charge(stats_.manifolds.sliceSeconds);
   for (size_t j = 0; j < k_; ++j) {
     if (j == robot) continue;
     ++stats_.screenedPoses;
-    const Slice& base = base_[j].front();
-    if (Slice(base, {held}).fscCount() > base.fscCount()) return false;
+    if (!cutsNoPassage(base_[j].front(), held)) return false;
   }
   return true;
 }
@@ -222,12 +220,7 @@ const std::vector<size_t>& KRobotPlanner::reachedCells() {
 }
 
 KRobotResult KRobotPlanner::finish(KRobotResult r, PlanStatus status) {
-  stats_.graphNodes = roadmap_.nodeCount();
-  stats_.graphEdges = roadmap_.edgeCount();
-  stats_.totalSeconds = clock_.seconds();
-  r.status = status;
-  r.stats = stats_;
-  return r;
+  return finishedRun(std::move(r), status, roadmap_, stats_, clock_);
 }
 
 KRobotResult KRobotPlanner::solve(const Termination& stop,
@@ -253,12 +246,8 @@ KRobotResult KRobotPlanner::solveRounds(const Termination& stop,
       base_[r].emplace_back(*worlds_[r], exact::rationalAngleNear(rb.start.theta, 30));
       continue;
     }
-    std::vector<double> thetas{rb.start.theta};
-    if (std::fabs(std::remainder(rb.goal.theta - rb.start.theta, 2 * M_PI)) > 1e-9)
-      thetas.push_back(rb.goal.theta);
-    for (size_t i = 0; i < settings_.nTheta + r; ++i) thetas.push_back(angles_[r]->next());
     sequenceAngles_[r] = settings_.nTheta + r;
-    addAngles(r, thetas, stop);
+    addAngles(r, angles_[r]->startGoalThen(rb, sequenceAngles_[r]), stop);
   }
   if (stop())
     return finish(result, stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound);

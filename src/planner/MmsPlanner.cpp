@@ -22,6 +22,14 @@ std::vector<double> AngleSequence::take(size_t n) {
   return out;
 }
 
+std::vector<double> AngleSequence::startGoalThen(const Robot& robot, size_t n) {
+  std::vector<double> out{robot.start.theta};
+  if (std::fabs(std::remainder(robot.goal.theta - robot.start.theta, 2 * M_PI)) > 1e-9)
+    out.push_back(robot.goal.theta);
+  for (size_t i = 0; i < n; ++i) out.push_back(next());
+  return out;
+}
+
 double AngleSequence::next() {
   const size_t k = count_++;
   double fraction;

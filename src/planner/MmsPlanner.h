@@ -50,6 +50,11 @@ class AngleSequence {
   double next();
   /// The next n angles.
   std::vector<double> take(size_t n);
+  /// A rigid robot's first angle set: its start angle, its goal angle if it differs, then the
+  /// next n of the sequence. A slice at the start or goal angle contains the whole passage of
+  /// positions around the start or goal, where tight problems are often tightest (a part seated
+  /// in its slot, the square inside the Pacman's mouth).
+  std::vector<double> startGoalThen(const Robot& robot, size_t n);
 
  private:
   size_t n_, count_ = 0;

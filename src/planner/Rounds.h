@@ -81,6 +81,19 @@ RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from
   }
 }
 
+/// A planner's result as it ends (found or not, cut short or not): the graph's size and the
+/// run's seconds in its statistics, and the status.
+template <class Result, class Stats>
+Result finishedRun(Result r, PlanStatus status, const Roadmap& roadmap, Stats& stats,
+                   const Stopwatch& clock) {
+  stats.graphNodes = roadmap.nodeCount();
+  stats.graphEdges = roadmap.edgeCount();
+  stats.totalSeconds = clock.seconds();
+  r.status = status;
+  r.stats = stats;
+  return r;
+}
+
 /// A finished run of rounds in a planner's result: the last candidate's certificate; when
 /// found, the graph path's size and footprint in `stats` and the certified waypoints. Returns
 /// the run's status.

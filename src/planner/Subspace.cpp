@@ -11,11 +11,7 @@ namespace {
 std::vector<MovedShape> movedShapes(const Scene& scene,
                                     const std::vector<std::pair<size_t, Pose>>& held) {
   std::vector<MovedShape> out;
-  for (const auto& [robot, pose] : held)
-    out.push_back({robot,
-                   pose.theta,
-                   placedRing(scene.robots[robot].shape, {0, 0, pose.theta}),
-                   {pose.x, pose.y}});
+  for (const auto& [robot, pose] : held) out.push_back(heldShape(scene, robot, pose));
   return out;
 }
 std::vector<Ring> placedRings(const std::vector<MovedShape>& shapes) {
@@ -45,6 +41,17 @@ void buildSlices(const SliceWorld& world, const std::vector<double>& thetas, uns
     }
     done += n;
   }
+}
+
+MovedShape heldShape(const Scene& scene, size_t robot, const Pose& pose) {
+  return {robot,
+          pose.theta,
+          placedRing(scene.robots[robot].shape, {0, 0, pose.theta}),
+          {pose.x, pose.y}};
+}
+
+bool cutsNoPassage(const Slice& base, const MovedShape& held) {
+  return Slice(base, {held}).fscCount() <= base.fscCount();
 }
 
 Vec2 subspaceLinePoint(const std::vector<Slice>& base, const Box& b, Random& rng) {

@@ -74,6 +74,14 @@ uint32_t addJoinedLine(Roadmap& roadmap, SubspaceStats& stats, std::vector<Line>
   return id;
 }
 
+/// Robot `robot` of `scene` held at `pose`, as an overlay subtracts it.
+MovedShape heldShape(const Scene& scene, size_t robot, const Pose& pose);
+
+/// Whether `held` leaves the moving robot of `base` (its slice among the obstacles alone) no
+/// more free-space cells than the obstacles do: it cuts none of its passages (a robot waiting in
+/// a niche, not across the corridor). One overlay: far cheaper than a subspace.
+bool cutsNoPassage(const Slice& base, const MovedShape& held);
+
 /// Where a subspace of a robot with base slices `base` puts a random line: half of the points
 /// where the robot fits at some angle of its set (a free point of a random base slice, 20 tries),
 /// the rest uniform in `bounds`.

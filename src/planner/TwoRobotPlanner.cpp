@@ -45,16 +45,8 @@ void TwoRobotPlanner::buildBaseSlices(const Termination& stop) {
       base_[r].emplace_back(*worlds_[r],
                             exact::rationalAngleNear(scene_.robots[r].start.theta, 30));
     } else {
-      // The robot's start and goal angles first: a slice there contains the whole passage of
-      // positions around the start or goal, where tight problems are often tightest (a part
-      // seated in its slot, the square inside the Pacman's mouth).
-      const Robot& rb = scene_.robots[r];
-      std::vector<double> thetas{rb.start.theta};
-      if (std::fabs(std::remainder(rb.goal.theta - rb.start.theta, 2 * M_PI)) > 1e-9)
-        thetas.push_back(rb.goal.theta);
-      for (size_t i = 0; i < angleCount(r); ++i) thetas.push_back(angles_[r]->next());
       sequenceAngles_[r] = angleCount(r);
-      addAngles(r, thetas, stop);
+      addAngles(r, angles_[r]->startGoalThen(scene_.robots[r], angleCount(r)), stop);
     }
   }
 }
@@ -269,23 +261,13 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
 }
 
 bool TwoRobotPlanner::leavesRoom(const Fixing& f) {
-  const Slice& base = base_[1 - f.robot].front();
-  const MovedShape held{f.robot,
-                        f.pose.theta,
-                        placedRing(contactScene_.robots[f.robot].shape, {0, 0, f.pose.theta}),
-                        {f.pose.x, f.pose.y}};
   const TimeCharge charge(stats_.manifolds.sliceSeconds);
   ++stats_.screenedPoses;
-  return Slice(base, {held}).fscCount() <= base.fscCount();
+  return cutsNoPassage(base_[1 - f.robot].front(), heldShape(contactScene_, f.robot, f.pose));
 }
 
 TwoRobotResult TwoRobotPlanner::finish(TwoRobotResult r, PlanStatus status) {
-  stats_.graphNodes = roadmap_.nodeCount();
-  stats_.graphEdges = roadmap_.edgeCount();
-  stats_.totalSeconds = clock_.seconds();
-  r.status = status;
-  r.stats = stats_;
-  return r;
+  return finishedRun(std::move(r), status, roadmap_, stats_, clock_);
 }
 
 TwoRobotResult TwoRobotPlanner::solve(const Termination& stop,
