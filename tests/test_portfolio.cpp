@@ -38,8 +38,9 @@ TEST(Portfolio, TheWinnerIsNamedAndRunAloneGivesTheSamePath) {
     ASSERT_TRUE(winner == "mms" || winner == "rrtconnect") << winner;
     EXPECT_NE(r.out.find("auto (" + winner + ") found a path"), std::string::npos) << r.out;
     winners.insert(winner);
-    ASSERT_EQ(runMms("plan " + file + " -q --seed 3 --time-limit 60 --planner " + winner + " -o " +
-                     quote(alone))
+    // The portfolio optimises the winner's path as the winner alone does when asked.
+    ASSERT_EQ(runMms("plan " + file + " -q --seed 3 --time-limit 60 --optimize 1 --planner " +
+                     winner + " -o " + quote(alone))
                   .code,
               0);
     EXPECT_EQ(path["waypoints"], readJson(alone)["waypoints"]) << scene << " won by " << winner;

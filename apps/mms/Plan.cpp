@@ -45,14 +45,15 @@ std::string countsText(const PlanStatistics& s) {
 void printStatistics(const PlanStatistics& s) {
   std::printf("  built: %s; graph %zu nodes, %zu edges; %zu rounds\n", countsText(s).c_str(),
               s.graphNodes, s.graphEdges, s.rounds);
-  std::string phases;
+  std::string phases, after;
   for (const auto& [name, t] : s.phases) {
+    std::string& to = afterFirstPath(name) ? after : phases;
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%s%s %.3f", phases.empty() ? "" : " + ", spaced(name).c_str(),
-                  t);
-    phases += buf;
+    std::snprintf(buf, sizeof buf, "%s%s %.3f", to.empty() ? "" : " + ", spaced(name).c_str(), t);
+    to += buf;
   }
-  std::printf("  time: %.3f s total = %s\n", s.seconds, phases.c_str());
+  std::printf("  time: %.3f s to the path = %s%s%s\n", s.seconds, phases.c_str(),
+              after.empty() ? "" : "; then ", after.c_str());
   if (s.rejectedPaths)
     std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
   if (s.manifoldsUsed)

@@ -38,6 +38,16 @@ std::vector<std::pair<mms::ParamSpec, std::vector<std::string>>> declaredParams(
   return out;
 }
 
+std::string typeName(const mms::ParamSpec& spec) {
+  if (!spec.choices.empty()) {
+    std::string names;
+    for (const std::string& c : spec.choices) names += (names.empty() ? "" : "|") + c;
+    return names;
+  }
+  return (spec.type == mms::ParamSpec::Type::Integer ? "INT in [" : "FLOAT in [") +
+         mms::formatNumber(spec.min) + ", " + mms::formatNumber(spec.max) + "]";
+}
+
 CLI::Option* sceneArg(CLI::App* cmd, std::string& v, const std::string& help) {
   return cmd->add_option("SCENE", v, help)->required();
 }
@@ -125,20 +135,19 @@ int main(int argc, char** argv) {
   std::map<std::string, std::string> paramText;
   std::map<std::string, bool> paramFlag;
   std::vector<std::pair<std::string, CLI::Option*>> paramOptions;
+  std::map<std::string, mms::ParamSpec> paramSpecs;
   const size_t omplPlanners = mms::planners().size() - 2;  // all but auto and mms
   for (const auto& [spec, users] : declaredParams()) {
     std::string help = spec.help, list;
     for (const std::string& u : users) list += (list.empty() ? "" : ", ") + u;
     if (users.size() == omplPlanners && users.front() != "auto") list = "every OMPL planner";
     if (users.size() < mms::planners().size()) help += " [" + list + "]";
-    CLI::Option* o =
-        spec.type == mms::ParamSpec::Type::Flag
-            ? planCmd->add_flag("--" + spec.name, paramFlag[spec.name], help)
-            : planCmd->add_option("--" + spec.name, paramText[spec.name], help)
-                  ->type_name(
-                      (spec.type == mms::ParamSpec::Type::Integer ? "INT in [" : "FLOAT in [") +
-                      mms::formatNumber(spec.min) + ", " + mms::formatNumber(spec.max) + "]");
+    CLI::Option* o = spec.type == mms::ParamSpec::Type::Flag
+                         ? planCmd->add_flag("--" + spec.name, paramFlag[spec.name], help)
+                         : planCmd->add_option("--" + spec.name, paramText[spec.name], help)
+                               ->type_name(typeName(spec));
     paramOptions.emplace_back(spec.name, o);
+    paramSpecs[spec.name] = spec;
   }
   planCmd->add_option("--stats-json", pa.statsJson,
                       "Write a JSON summary of the run (status, times, sizes) here");
@@ -162,8 +171,9 @@ int main(int argc, char** argv) {
       "(random: --seed, --robots, --obstacles), carry-turn (--seed: a gripper and the part it "
       "holds turn together in a tight chamber), niche-swap (--seed: two robots swap the ends "
       "of a corridor with a niche), niche-three (--seed: two robots cross a corridor in which a "
-      "third "
-      "must wait in a niche), open-clutter (--seed: one or two L-shaped robots cross random "
+      "third must wait in a niche), discs-swap (--seed: 4-5 discs round a block to each "
+      "other's places), discs-room (--seed, --robots: discs cross an open room among "
+      "obstacles), open-clutter (--seed: one or two L-shaped robots cross random "
       "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor) or doors "
       "(--seed: a long robot lines up with the doors of 1-3 thin walls)");
   scenarioCmd
@@ -364,8 +374,9 @@ int main(int argc, char** argv) {
           for (const auto& [name, option] : paramOptions) {
             if (option->count() == 0) continue;
             double v = 1;  // a flag given
-            if (!paramFlag.count(name) && !CLI::detail::lexical_cast(paramText[name], v))
-              throw mms::InputError("--" + name + ": '" + paramText[name] + "' is not a number");
+            if (!paramFlag.count(name))
+              if (const std::string why = paramSpecs[name].parse(paramText[name], v); !why.empty())
+                throw mms::InputError("--" + name + ": " + why);
             pa.params.values[name] = v;
           }
           return plan(pa);

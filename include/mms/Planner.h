@@ -29,11 +29,15 @@ struct ParamSpec {
   double min = 0, max = 0;  // accepted values, inclusive (a flag: 0 or 1)
   double value = 0;         // the default, read from the planner's settings struct
   std::string help;         // one sentence; the default is appended where shown
+  /// Named values (an Integer parameter's value is the index): "length", "clearance".
+  std::vector<std::string> choices{};
 
   /// The name in statistics and path files: "n-theta" -> "n_theta".
   std::string key() const;
   /// "" when `v` is acceptable, else why not (one phrase: "not in [1, 1000000]").
   std::string problem(double v) const;
+  /// The value of `text` (a number, or one of the choices) in `v`; else why not (one phrase).
+  std::string parse(const std::string& text, double& v) const;
 };
 
 /// "%g" of a parameter's value, for help texts and messages.
@@ -60,9 +64,14 @@ struct PlanStatistics {
   size_t pathCells = 0;                                // free-space cells on the graph path
   size_t rejectedPaths = 0;                            // candidate motions the certifier refused
   std::vector<std::pair<std::string, size_t>> counts;  // what was built, by name, in order
-  std::vector<std::pair<std::string, double>> phases;  // seconds by phase, in order
+  /// Seconds by phase, in order. They sum to `seconds`, but for the phases that improve a
+  /// path already found (afterFirstPath: "optimize", OMPL's "simplify"), which come after it.
+  std::vector<std::pair<std::string, double>> phases;
   std::string solvedBy;  // a portfolio's member whose path this is ("" otherwise)
 };
+
+/// Whether a phase improves a path already found (not part of PlanStatistics::seconds).
+bool afterFirstPath(const std::string& phase);
 
 enum class PlanStatus { Found, NotFound, Uncertified, Cancelled };
 /// "found", "not_found", "uncertified", "cancelled".

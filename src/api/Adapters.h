@@ -17,6 +17,10 @@ PlannerInfo portfolioPlannerInfo();
 /// OMPL 1.5.2's planners with mms's collision checker and continuous certification.
 std::vector<PlannerInfo> omplPlannerInfos();
 
+/// `info` with the parameters optimize and objective: its planner's first certified path is
+/// then optimised (path/Optimize.h) within the time limit, when optimize is 1.
+PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault);
+
 /// A parameter's value: the one given, or the default declared in `spec`.
 double paramValue(const PlannerParams& params, const ParamSpec& spec);
 

@@ -30,6 +30,7 @@ class OmplAdapter : public Planner {
     out.stats.phases = {{"setup", r.setupSeconds},
                         {"solve", r.solveSeconds},
                         {"certify", r.seconds - r.setupSeconds - r.solveSeconds}};
+    if (settings_.simplify) out.stats.phases.emplace_back("simplify", r.simplifySeconds);
     out.parameters = parameters_;
     return out;
   }
@@ -92,6 +93,12 @@ std::vector<PlannerInfo> omplPlannerInfos() {
       {"kpiece", "OMPL KPIECE1", true, false, false},
       {"bkpiece", "OMPL BKPIECE1", true, false, false},
       {"lazyprm", "OMPL LazyPRM", true, false, false},
+      {"rrtstar",
+       "OMPL RRT* (asymptotically optimal: improves its path, shortest length, until the time "
+       "limit)",
+       true, false, false},
+      {"bitstar", "OMPL BIT* (asymptotically optimal: improves its path until the time limit)",
+       false, false, false},
   };
   std::vector<PlannerInfo> out;
   for (const Entry& e : entries) {

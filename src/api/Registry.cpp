@@ -1,5 +1,6 @@
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "api/Adapters.h"
 #include "mms/Errors.h"
@@ -21,6 +22,27 @@ std::string ParamSpec::problem(double v) const {
   return "";
 }
 
+std::string ParamSpec::parse(const std::string& text, double& v) const {
+  for (size_t i = 0; i < choices.size(); ++i)
+    if (text == choices[i]) {
+      v = double(i);
+      return "";
+    }
+  std::string names;
+  for (const std::string& c : choices) names += (names.empty() ? "" : ", ") + c;
+  size_t used = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size())
+    return "'" + text + "' is not " + (choices.empty() ? "a number" : "one of " + names);
+  return problem(v);
+}
+
+bool afterFirstPath(const std::string& phase) { return phase == "optimize" || phase == "simplify"; }
+
 std::string formatNumber(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);
@@ -34,8 +56,12 @@ double paramValue(const PlannerParams& params, const ParamSpec& spec) {
 
 const std::vector<PlannerInfo>& planners() {
   static const std::vector<PlannerInfo> all = [] {
-    std::vector<PlannerInfo> v{portfolioPlannerInfo(), mmsPlannerInfo()};
-    for (PlannerInfo& i : omplPlannerInfos()) v.push_back(std::move(i));
+    // MMS's paths are optimised by default; OMPL's planners keep OMPL's own simplifier
+    // (--simplify), so that they are the baselines OMPL's users know.
+    std::vector<PlannerInfo> v{withPathOptimization(portfolioPlannerInfo(), true),
+                               withPathOptimization(mmsPlannerInfo(), true)};
+    for (PlannerInfo& i : omplPlannerInfos())
+      v.push_back(withPathOptimization(std::move(i), false));
     return v;
   }();
   return all;

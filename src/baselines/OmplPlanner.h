@@ -31,10 +31,11 @@ struct OmplResult {
   PlanStatus status = PlanStatus::NotFound;  // Found, NotFound or Uncertified
   std::vector<Config> waypoints;             // certified when Found
   PathCheckResult certificate;               // why an OMPL path was refused, when Uncertified
-  double seconds = 0;       // to a certified path (or to giving up): setup, solve, certify
-  double setupSeconds = 0;  // the checker and OMPL's space and planner
-  double solveSeconds = 0;  // OMPL's solve alone; the rest simplifies and certifies
-  size_t states = 0;        // vertices of the planner's graph or tree
+  double seconds = 0;          // to a certified path (or to giving up): setup, solve, certify
+  double setupSeconds = 0;     // the checker and OMPL's space and planner
+  double solveSeconds = 0;     // OMPL's solve alone; the rest certifies
+  double simplifySeconds = 0;  // OMPL's simplifier and its path's certification, after `seconds`
+  size_t states = 0;           // vertices of the planner's graph or tree
 };
 
 /// Plans all robots of the scene jointly (SE(2) per rigid robot, R^2 per translating one).

@@ -1,0 +1,252 @@
+#include "path/Optimize.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "check/PathChecker.h"
+
+namespace mms {
+
+namespace {
+
+double segmentCost(const CollisionChecker& checker, const Config& a, const Config& b) {
+  double c = 0;
+  for (size_t i = 0; 3 * i < a.size(); ++i)
+    c += std::hypot(b[3 * i] - a[3 * i], b[3 * i + 1] - a[3 * i + 1]) +
+         checker.radius(i) * std::fabs(b[3 * i + 2] - a[3 * i + 2]);
+  return c;
+}
+
+Config lerp(const Config& a, const Config& b, double t) {
+  Config q(a.size());
+  for (size_t c = 0; c < a.size(); ++c) q[c] = a[c] + t * (b[c] - a[c]);
+  return q;
+}
+
+// Which coordinates of a robot a partial shortcut straightens.
+enum class Part { Translation, Rotation, Both };
+
+class Optimizer {
+ public:
+  Optimizer(const Scene& scene, const CollisionChecker& checker, Random& rng,
+            const OptimizeSettings& settings, const Termination& stop, OptimizeStats& stats)
+      : scene_(scene), checker_(checker), rng_(rng), settings_(settings), stop_(stop), s_(stats) {
+    // A candidate stretch is short; one that needs more evaluations slides along contacts and
+    // is not worth the time.
+    quick_.maxEvaluations = 20000;
+  }
+
+  void run(std::vector<Config>& w) {
+    turnShortWay(w);
+    for (size_t pass = 0; pass < settings_.passes && !stop_(); ++pass) {
+      const size_t before = s_.accepted;
+      for (size_t a = 0; a < settings_.attempts && !stop_() && w.size() >= 2; ++a)
+        shortcut(w, /*partial=*/rng_.below(3) != 0);
+      dropStraightWaypoints(w);
+      if (s_.accepted == before) break;
+    }
+    if (settings_.objective == PathObjective::Clearance) pushAwayFromContacts(w);
+  }
+
+ private:
+  bool rigid(size_t robot) const { return scene_.robots[robot].motion != Motion::Translate; }
+
+  bool certified(const std::vector<Config>& stretch) {
+    ++s_.checked;
+    return checkMotion(scene_, checker_, stretch, quick_).ok;
+  }
+
+  // A turn of more than half a circle the other way round: the rest of the path is the same
+  // motion shifted by a full turn, so only the segment itself needs certifying.
+  void turnShortWay(std::vector<Config>& w) {
+    for (size_t i = 0; i < scene_.robots.size(); ++i) {
+      if (!rigid(i)) continue;
+      for (size_t j = 0; j + 1 < w.size() && !stop_(); ++j) {
+        const double d = w[j + 1][3 * i + 2] - w[j][3 * i + 2];
+        if (std::fabs(d) <= M_PI + 1e-9) continue;
+        const double shift = -2 * M_PI * std::round(d / (2 * M_PI));
+        Config next = w[j + 1];
+        next[3 * i + 2] += shift;
+        if (!certified({w[j], next})) continue;
+        for (size_t k = j + 1; k < w.size(); ++k) w[k][3 * i + 2] += shift;
+        ++s_.accepted;
+      }
+    }
+  }
+
+  // The index of a waypoint at arc parameter `s` (cumulative cost), inserted on its segment
+  // when none is there: the path's motion is unchanged.
+  size_t pointAt(std::vector<Config>& w, const std::vector<double>& cum, double s) {
+    size_t j = size_t(std::upper_bound(cum.begin(), cum.end(), s) - cum.begin());
+    j = std::clamp<size_t>(j, 1, w.size() - 1);  // s lies on segment (j - 1, j)
+    const double length = cum[j] - cum[j - 1];
+    const double t = length > 0 ? (s - cum[j - 1]) / length : 0;
+    if (t <= 1e-9) return j - 1;
+    if (t >= 1 - 1e-9) return j;
+    w.insert(w.begin() + long(j), lerp(w[j - 1], w[j], t));
+    return j;
+  }
+
+  // One attempt: two random points of the path, joined straight (all of every robot when
+  // not `partial`) or in one robot's translation, rotation or both.
+  void shortcut(std::vector<Config>& w, bool partial) {
+    std::vector<double> cum{0};
+    for (size_t k = 1; k < w.size(); ++k)
+      cum.push_back(cum.back() + segmentCost(checker_, w[k - 1], w[k]));
+    const double total = cum.back();
+    if (total <= 0) return;
+    double s1 = rng_.uniform(0, total), s2 = rng_.uniform(0, total);
+    if (s1 > s2) std::swap(s1, s2);
+    if (rng_.below(8) == 0) s2 = total;  // to the end, whose angle may change by a full turn
+    if (s2 - s1 < 1e-9 * total) return;
+    std::vector<Config> c = w;
+    const size_t i = pointAt(c, cum, s1);
+    std::vector<double> cc{0};
+    for (size_t k = 1; k < c.size(); ++k)
+      cc.push_back(cc.back() + segmentCost(checker_, c[k - 1], c[k]));
+    const size_t jj = pointAt(c, cc, s2);
+    if (c.size() > cc.size()) {  // inserted: the arc parameters once more
+      cc = {0};
+      for (size_t k = 1; k < c.size(); ++k)
+        cc.push_back(cc.back() + segmentCost(checker_, c[k - 1], c[k]));
+    }
+    if (jj <= i) return;
+    const double oldCost = cc[jj] - cc[i];
+    // The goal's angle counts modulo a full turn (as the certifier takes it): a stretch to the
+    // end may end there at the turn nearest to where it begins.
+    auto aimEnd = [&](size_t robot) {
+      if (jj + 1 < c.size() || !rigid(robot)) return;
+      double& end = c[jj][3 * robot + 2];
+      end += 2 * M_PI * std::round((c[i][3 * robot + 2] - end) / (2 * M_PI));
+    };
+    if (!partial) {
+      for (size_t r = 0; r < scene_.robots.size(); ++r) aimEnd(r);
+      const double newCost = segmentCost(checker_, c[i], c[jj]);
+      if (newCost >= oldCost - 1e-12 * total) return;
+      if (!certified({c[i], c[jj]})) return;
+      c.erase(c.begin() + long(i) + 1, c.begin() + long(jj));
+    } else {
+      if (jj < i + 2) return;
+      const size_t robot = rng_.below(scene_.robots.size());
+      Part part = Part(rng_.below(3));
+      if (!rigid(robot)) part = Part::Translation;
+      std::vector<size_t> coords;
+      if (part != Part::Rotation) coords = {3 * robot, 3 * robot + 1};
+      if (part != Part::Translation) {
+        coords.push_back(3 * robot + 2);
+        aimEnd(robot);
+      }
+      for (size_t k = i + 1; k < jj; ++k) {
+        const double t = (cc[k] - cc[i]) / oldCost;
+        for (const size_t x : coords) c[k][x] = c[i][x] + t * (c[jj][x] - c[i][x]);
+      }
+      double newCost = 0;
+      for (size_t k = i; k < jj; ++k) newCost += segmentCost(checker_, c[k], c[k + 1]);
+      if (newCost >= oldCost - 1e-12 * total) return;
+      if (!certified(std::vector<Config>(c.begin() + long(i), c.begin() + long(jj) + 1))) return;
+    }
+    w = std::move(c);
+    ++s_.accepted;
+  }
+
+  // A waypoint on the straight segment between its neighbours, at one common fraction for
+  // every coordinate, changes nothing about the motion.
+  static void dropStraightWaypoints(std::vector<Config>& w) {
+    for (size_t k = 1; k + 1 < w.size();) {
+      const Config &a = w[k - 1], &q = w[k], &b = w[k + 1];
+      double t = -1, scale = 0;
+      size_t widest = 0;
+      for (size_t c = 0; c < a.size(); ++c)
+        if (std::fabs(b[c] - a[c]) > scale) scale = std::fabs(b[c] - a[c]), widest = c;
+      bool straight = true;
+      if (scale == 0) {
+        straight = q == a;
+      } else {
+        t = (q[widest] - a[widest]) / (b[widest] - a[widest]);
+        straight = t >= 0 && t <= 1;
+        for (size_t c = 0; c < a.size() && straight; ++c)
+          straight = std::fabs(a[c] + t * (b[c] - a[c]) - q[c]) <= 1e-12 * (1 + std::fabs(q[c]));
+      }
+      if (straight)
+        w.erase(w.begin() + long(k));
+      else
+        ++k;
+    }
+  }
+
+  double clearanceAt(const Config& q) {
+    const PathCheckResult r = checkMotion(scene_, checker_, {q}, quick_);
+    return r.ok ? r.minClearance : -1;
+  }
+
+  // Moves single waypoints away from contacts: a move is taken when its two segments stay
+  // certified, their smallest clearance does not fall, and the waypoint's own clearance rises.
+  void pushAwayFromContacts(std::vector<Config>& w) {
+    if (w.size() < 3) return;
+    const size_t attempts =
+        settings_.clearanceAttempts ? settings_.clearanceAttempts : 50 * (w.size() - 2);
+    std::vector<double> step(w.size(), 0);
+    for (size_t k = 1; k + 1 < w.size(); ++k)
+      step[k] = 0.25 * std::min(segmentCost(checker_, w[k - 1], w[k]),
+                                segmentCost(checker_, w[k], w[k + 1]));
+    for (size_t a = 0; a < attempts && !stop_(); ++a) {
+      const size_t k = 1 + rng_.below(w.size() - 2);
+      if (step[k] <= checker_.tolerance()) continue;
+      const size_t robot = rng_.below(scene_.robots.size());
+      Config q = w[k];
+      const double angle = rng_.uniform(0, 2 * M_PI), r = step[k] * rng_.uniform();
+      q[3 * robot] += r * std::cos(angle);
+      q[3 * robot + 1] += r * std::sin(angle);
+      if (rigid(robot))
+        q[3 * robot + 2] += rng_.uniform(-1, 1) * step[k] / std::max(1.0, checker_.radius(robot));
+      const std::vector<Config> before{w[k - 1], w[k], w[k + 1]}, after{w[k - 1], q, w[k + 1]};
+      ++s_.checked;
+      const PathCheckResult now = checkMotion(scene_, checker_, after, quick_);
+      if (!now.ok || clearanceAt(q) <= clearanceAt(w[k]) ||
+          now.minClearance < checkMotion(scene_, checker_, before, quick_).minClearance) {
+        step[k] *= 0.7;
+        continue;
+      }
+      w[k] = q;
+      ++s_.accepted;
+    }
+  }
+
+  const Scene& scene_;
+  const CollisionChecker& checker_;
+  Random& rng_;
+  const OptimizeSettings& settings_;
+  const Termination& stop_;
+  OptimizeStats& s_;
+  PathCheckSettings quick_;
+};
+
+}  // namespace
+
+double pathCost(const CollisionChecker& checker, const std::vector<Config>& w) {
+  double c = 0;
+  for (size_t k = 1; k < w.size(); ++k) c += segmentCost(checker, w[k - 1], w[k]);
+  return c;
+}
+
+OptimizeStats optimizePath(const Scene& scene, const CollisionChecker& checker, Random& rng,
+                           const OptimizeSettings& settings, const Termination& stop,
+                           std::vector<Config>& waypoints) {
+  Stopwatch watch;
+  OptimizeStats s;
+  s.costBefore = pathCost(checker, waypoints);
+  Optimizer(scene, checker, rng, settings, stop, s).run(waypoints);
+  s.costAfter = pathCost(checker, waypoints);
+  s.seconds = watch.seconds();
+  return s;
+}
+
+double minimumRotation(const Scene& scene) {
+  double r = 0;
+  for (const Robot& robot : scene.robots)
+    if (robot.motion != Motion::Translate)
+      r += std::fabs(std::remainder(robot.goal.theta - robot.start.theta, 2 * M_PI));
+  return r;
+}
+
+}  // namespace mms

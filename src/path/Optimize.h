@@ -1,0 +1,58 @@
+#pragma once
+// Certified path optimisation for any planner's path: every change is a new stretch of motion
+// that the continuous path checker certifies before it is taken, so the result is as safe as
+// the path it started from.
+//
+// Cost is the bound the certifier uses on how far a robot's points move: per robot and segment
+// |dp| + radius * |dtheta|, summed. It falls with each step below:
+//  - turn the short way: a rigid robot's turn of more than half a circle in one segment is
+//    replaced by the turn the other way round, when that is free;
+//  - shortcuts between two points anywhere on the path (not only waypoints), all robots at once;
+//  - partial shortcuts (as OMPL's PathSimplifier): one robot's translation, or its rotation, or
+//    both, straightened over a stretch while everything else keeps its timing. This is what
+//    removes rotation a robot does not need when the passage needs only its translation;
+//  - waypoints on a straight line through their neighbours are dropped.
+// The objective "clearance" then moves waypoints away from contacts while the path stays
+// certified and no segment's smallest clearance falls.
+//
+// Bounded by attempts (a seed fixes the result) and by `stop` (the planner's time limit).
+#include <cstddef>
+#include <vector>
+
+#include "geometry/CollisionChecker.h"
+#include "mms/Scene.h"
+#include "mms/Termination.h"
+#include "util/Random.h"
+
+namespace mms {
+
+enum class PathObjective { Length, Clearance };
+
+struct OptimizeSettings {
+  PathObjective objective = PathObjective::Length;
+  size_t attempts = 400;         // shortcut attempts, full and partial, per pass
+  size_t passes = 4;             // passes end early once one changes nothing
+  size_t clearanceAttempts = 0;  // waypoint moves for the clearance objective (0: 50 per waypoint)
+};
+
+struct OptimizeStats {
+  double costBefore = 0, costAfter = 0;
+  size_t accepted = 0;  // changes taken
+  size_t checked = 0;   // candidate stretches given to the certifier
+  double seconds = 0;
+};
+
+/// The cost above: sum over robots and segments of |dp| + radius * |dtheta|.
+double pathCost(const CollisionChecker& checker, const std::vector<Config>& waypoints);
+
+/// Optimises a certified path in place; the path stays certified (start and goal unchanged,
+/// translate-only robots keep their angle).
+OptimizeStats optimizePath(const Scene& scene, const CollisionChecker& checker, Random& rng,
+                           const OptimizeSettings& settings, const Termination& stop,
+                           std::vector<Config>& waypoints);
+
+/// Rotation a path's robots need at least: per rigid robot, the short way from its start angle
+/// to its goal angle (the certifier accepts the goal modulo a full turn).
+double minimumRotation(const Scene& scene);
+
+}  // namespace mms
