@@ -53,6 +53,38 @@ TEST(BenchReport, TrimmedMeanMedianAndFailures) {
   EXPECT_EQ(lines(csvReport(runs)), runs.size() + 1);
 }
 
+TEST(BenchReport, OneRunHasNoDeviationAndUncertifiedRunsNoPathMeasures) {
+  std::vector<RunRecord> runs{run("a", 1, "found", 0.00803), run("b", 1, "found", 1),
+                              run("b", 2, "found", 3), run("c", 1, "uncertified", 2)};
+  runs[0].rotation = 1.5;
+  const std::string md = markdownReport(summarize(runs), "");
+  EXPECT_NE(md.find("| 0.00803 (one run) | 0.00803 | 10 | 1.5 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 2 ± 1.4 (two runs) |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("± 0 "), std::string::npos) << md;
+  const std::string csv = csvReport(runs);
+  // No tightness (the scene has none), no translation or rotation for the uncertified run.
+  EXPECT_NE(csv.find("s,,c,\"\",1,uncertified,2,0,0,,,0,\n"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("-1"), std::string::npos) << csv;
+}
+
+TEST(BenchReport, AFoundRunPastItsLimitIsAFailure) {
+  RunRecord r = run("a", 1, "found", 9);
+  r.timeLimit = 10;
+  r.wallSeconds = 10.19;  // within 2 %
+  EXPECT_FALSE(r.failIfOverLimit());
+  EXPECT_TRUE(r.solved());
+  r.wallSeconds = 11.7;
+  EXPECT_TRUE(r.failIfOverLimit());
+  EXPECT_EQ(r.status, "over_limit");
+  EXPECT_FALSE(r.solved());
+  RunRecord quick = run("a", 1, "found", 0.01);
+  quick.timeLimit = 0.05;
+  quick.wallSeconds = 0.099;  // 50 ms past a short limit is allowed
+  EXPECT_FALSE(quick.failIfOverLimit());
+  quick.wallSeconds = 0.11;
+  EXPECT_TRUE(quick.failIfOverLimit());
+}
+
 TEST(BenchReport, SpeedupAgainstTheBestOtherPlanner) {
   std::vector<RunRecord> runs;
   auto add = [&](const std::string& scene, const std::string& planner, double seconds,

@@ -134,3 +134,25 @@ TEST(Limits, ThePortfolioRunsOutOfMemoryCleanly) {
 
 }  // namespace
 }  // namespace mms
+
+namespace mms {
+
+// An output that cannot be written is refused before any work: the scene is not even read
+// (it does not exist either, and the message is about the output), so no plan is lost.
+TEST(Limits, UnwritableOutputsAreRefusedBeforeThePlanStarts) {
+  test::TempDir dir;
+  const std::string missingScene = test::quote(dir.path("absent.json"));
+  for (const std::string option : {"-o", "--svg", "--stats-json"}) {
+    const test::Outcome r =
+        test::runMms("plan " + missingScene + " " + option + " " + dir.path("no/such/out"));
+    EXPECT_EQ(r.code, 2) << option;
+    EXPECT_NE(r.err.find("(" + option + "): cannot write here: folder"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  const test::Outcome folder = test::runMms("plan " + missingScene + " -o " + dir.path(""));
+  EXPECT_EQ(folder.code, 2);
+  EXPECT_NE(folder.err.find("it is a folder"), std::string::npos) << folder.err;
+}
+
+}  // namespace mms

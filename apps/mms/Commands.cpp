@@ -183,3 +183,12 @@ int exportScene(const ExportArgs& a) {
 }
 
 }  // namespace mms::cli
+
+namespace mms::cli {
+
+const Stopwatch& processClock() {
+  static const Stopwatch clock;
+  return clock;
+}
+
+}  // namespace mms::cli

@@ -62,6 +62,9 @@ struct PlanArgs : RunArgs {
 };
 int plan(const PlanArgs& a);
 
+/// Time since the process started (the time limits hold for the whole command).
+const Stopwatch& processClock();
+
 }  // namespace mms::cli
 
 namespace mms::cli {

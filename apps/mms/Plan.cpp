@@ -120,6 +120,9 @@ int report(const PlanArgs& a, const Scene& scene, const std::string& label, cons
 }  // namespace
 
 int plan(const PlanArgs& a) {
+  for (const auto& [path, option] :
+       {std::pair{a.output, "-o"}, {a.svg, "--svg"}, {a.statsJson, "--stats-json"}})
+    checkWritable(path, option);
   const Scene scene = readScene(a.scene, a.quiet);
   const PlannerInfo* info = findPlanner(a.planner);
   if (!info) throw InputError("--planner: unknown planner '" + a.planner + "'");
@@ -144,7 +147,7 @@ int plan(const PlanArgs& a) {
 #if !defined(__SANITIZE_ADDRESS__)
   params.exitsAfterRun = true;  // under ASan, free everything so leaks stay visible
 #endif
-  const std::unique_ptr<Planner> planner = makePlanner(a.planner, scene, params, a.scene);
+  std::unique_ptr<Planner> planner = makePlanner(a.planner, scene, params, a.scene);
   int exitCode = 0;
   nlohmann::json summaries = nlohmann::json::array();
   for (size_t qi = 0; qi < queries.size(); ++qi) {
@@ -162,7 +165,11 @@ int plan(const PlanArgs& a) {
       std::fprintf(stderr, "mms plan: %.1f s, round %zu: %s, graph %zu nodes / %zu edges\n",
                    clock.seconds(), s.rounds, countsText(s).c_str(), s.graphNodes, s.graphEdges);
     };
-    const PlanResult r = planner->solve(Termination(a.timeLimit, sigintFlag()), progress);
+    // The limit holds for the whole command: what reading the scene and making the planner
+    // took (a thousand obstacles: tens of ms) comes off the first query's time.
+    const double limit =
+        qi == 0 ? std::max(0.0, a.timeLimit - processClock().seconds()) : a.timeLimit;
+    const PlanResult r = planner->solve(Termination(limit, sigintFlag()), progress);
     if (interruptRequested()) throw Interrupted();
     summaries.push_back(toJson(summarize(a.scene, a.planner, a.seed, a.timeLimit, r)));
     const bool many = queries.size() > 1;
@@ -173,6 +180,9 @@ int plan(const PlanArgs& a) {
   if (!a.statsJson.empty())
     writeFileAtomically(a.statsJson,
                         (summaries.size() == 1 ? summaries[0] : summaries).dump(1) + "\n");
+  // Freeing a roadmap of a million manifolds takes seconds past the limit; the process is
+  // about to exit and the system takes the memory back at once.
+  if (params.exitsAfterRun) (void)planner.release();
   return exitCode;
 }
 

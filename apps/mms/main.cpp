@@ -67,6 +67,7 @@ CLI::Option* seedOption(CLI::App* cmd, uint64_t& v, const std::string& help) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  mms::cli::processClock();  // started: the time limits count from here
   using namespace mms::cli;
   CLI::App app{
       "mms: motion planning via manifold samples for planar polygonal robots.\n"

@@ -97,6 +97,16 @@ std::string fmt(const char* f, double v) {
 
 }  // namespace
 
+bool RunRecord::failIfOverLimit() {
+  if (!solved() || timeLimit <= 0) return false;
+  const double allowed = timeLimit + std::max(0.05, 0.02 * timeLimit);
+  if (wallSeconds <= allowed) return false;
+  status = "over_limit";
+  detail = "found a path, but the run took " + fmt("%.3f", wallSeconds) + " s of a " +
+           fmt("%g", timeLimit) + " s limit";
+  return true;
+}
+
 std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
   std::map<std::tuple<std::string, std::string, std::string>, std::vector<const RunRecord*>> groups;
   std::vector<std::tuple<std::string, std::string, std::string>> order;
@@ -113,7 +123,7 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
     s.tightness = g.front()->tightness;
     s.timeLimit = g.front()->timeLimit;
     s.runs = g.size();
-    std::vector<double> solvedTimes, all, lengths, graphs, built, used;
+    std::vector<double> solvedTimes, all, lengths, rotations, graphs, built, used;
     for (const RunRecord* r : g) {
       s.uncertified += r->status == "uncertified";
       if (r->status == "not_run") {
@@ -128,6 +138,7 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
         solvedTimes.push_back(r->seconds);
         all.push_back(r->seconds);
         lengths.push_back(r->translation);
+        rotations.push_back(r->rotation);
         built.push_back(double(r->manifoldsBuilt));
         used.push_back(double(r->manifoldsUsed));
       } else {
@@ -150,6 +161,7 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
     s.median = median(all);
     s.medianSolved = std::isfinite(s.median);
     s.medianLength = median(lengths);
+    s.medianRotation = median(rotations);
     s.medianGraph = median(graphs);
     s.medianBuilt = median(built);
     s.medianUsed = median(used);
@@ -162,21 +174,26 @@ std::string markdownReport(const std::vector<Summary>& summaries, const std::str
   std::ostringstream md;
   if (!heading.empty()) md << heading << "\n\n";
   md << "| scene | planner | parameters | solved | mean ± stdev [s] (no min/max) | median [s] | "
-        "path length | "
-        "graph size | peak memory [MB] |\n";
-  md << "|---|---|---|---|---|---|---|---|---|\n";
+        "path length | rotation [rad] | graph size | peak memory [MB] |\n";
+  md << "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Summary& s : summaries) {
     md << "| " << s.scene << " | " << s.planner << " | "
        << (s.parameters.empty() ? "defaults" : s.parameters) << " | " << s.solved << "/" << s.runs;
     if (s.uncertified) md << " (" << s.uncertified << " uncertified)";
     if (s.notRun) md << " (" << s.notRun << " not run: median decided)";
     md << " | ";
-    if (s.solved)
+    // Fewer than three solved runs are not trimmed, and one run has no deviation.
+    if (s.solved == 1)
+      md << fmt("%.3g", s.meanTrimmed) << " (one run)";
+    else if (s.solved == 2)
+      md << fmt("%.3g", s.meanTrimmed) << " ± " << fmt("%.2g", s.stdevTrimmed) << " (two runs)";
+    else if (s.solved)
       md << fmt("%.3g", s.meanTrimmed) << " ± " << fmt("%.2g", s.stdevTrimmed);
     else
       md << "–";
     md << " | " << (s.medianSolved ? fmt("%.3g", s.median) : "> " + fmt("%g", s.timeLimit)) << " | "
-       << (s.solved ? fmt("%.3g", s.medianLength) : "–") << " | " << fmt("%.0f", s.medianGraph)
+       << (s.solved ? fmt("%.3g", s.medianLength) : "–") << " | "
+       << (s.solved ? fmt("%.3g", s.medianRotation) : "–") << " | " << fmt("%.0f", s.medianGraph)
        << " | " << fmt("%.0f", s.peakMemoryMb) << " |\n";
   }
   return md.str();
@@ -238,11 +255,18 @@ std::string csvReport(const std::vector<RunRecord>& runs) {
   csv << "scene,tightness,planner,parameters,seed,status,seconds,wall_seconds,peak_memory_mb,"
          "translation,rotation,"
          "graph_size,solved_by\n";
+  // Fields that do not apply are empty: no tightness for a scene without one, no path
+  // measures for a run without a certified path.
+  auto field = [](bool applies, double v) {
+    std::ostringstream s;
+    if (applies) s << v;
+    return s.str();
+  };
   for (const RunRecord& r : runs)
-    csv << r.scene << "," << r.tightness << "," << r.planner << ",\"" << r.parameters << "\","
-        << r.seed << "," << r.status << "," << r.seconds << "," << r.wallSeconds << ","
-        << r.peakMemoryMb << "," << r.translation << "," << r.rotation << "," << r.graphSize << ","
-        << r.solvedBy << "\n";
+    csv << r.scene << "," << field(r.tightness >= 0, r.tightness) << "," << r.planner << ",\""
+        << r.parameters << "\"," << r.seed << "," << r.status << "," << r.seconds << ","
+        << r.wallSeconds << "," << r.peakMemoryMb << "," << field(r.solved(), r.translation) << ","
+        << field(r.solved(), r.rotation) << "," << r.graphSize << "," << r.solvedBy << "\n";
   return csv.str();
 }
 

@@ -30,6 +30,9 @@ struct RunRecord {
   std::string solvedBy;  // the portfolio's member that found the path (auto), else ""
 
   bool solved() const { return status == "found"; }
+  /// A found run whose process took longer than the limit allows (the limit plus 2 % or
+  /// 50 ms, whichever is more) is a failure: status "over_limit". Returns whether it was.
+  bool failIfOverLimit();
   nlohmann::json toJson() const;
   static RunRecord fromJson(const nlohmann::json& j);
 };
@@ -44,7 +47,7 @@ struct Summary {
          stdevTrimmed = 0;  // over solved runs, without the fastest and slowest (paper's protocol)
   double median = 0;        // over all runs, an unsolved run counting as infinite
   bool medianSolved = false;
-  double medianLength = 0, medianGraph = 0, peakMemoryMb = 0;
+  double medianLength = 0, medianRotation = 0, medianGraph = 0, peakMemoryMb = 0;
   double medianBuilt = 0, medianUsed = 0;  // manifolds, over solved runs (mms)
 };
 

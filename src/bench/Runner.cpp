@@ -342,6 +342,7 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
         fillFromStats(rec, r.stats);
         if (WEXITSTATUS(status) == 3)
           rec.status = "crashed", rec.detail = "internal error or out of memory";
+        rec.failIfOverLimit();
       }
       out << rec.toJson().dump() << "\n" << std::flush;
       count(rec);

@@ -8,4 +8,9 @@ namespace mms {
 /// InputError naming the file when it cannot be written.
 void writeFileAtomically(const std::string& path, const std::string& content);
 
+/// Throws the InputError writeFileAtomically would throw for `path` (its folder missing, not a
+/// folder or not writable; `path` itself a folder), before any work: a long run must not end
+/// by losing its result. `option` names the option in the message, e.g. "-o".
+void checkWritable(const std::string& path, const std::string& option);
+
 }  // namespace mms
