@@ -77,10 +77,13 @@ TEST_F(BarSlot, EndsMustMatchStartAndGoal) {
   PathCheckResult r =
       check(s, pathOf({{-5.9, 0, kHalfPi}, {-6, 0, 0}, {6, 0, 0}, {6, 0, kHalfPi}}));
   EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.reason.find("not the start of robot 'bar'"), std::string::npos);
+  EXPECT_NE(
+      r.reason.find("puts robot 'bar' at (-5.9, 0, 1.5708), not at its start (-6, 0, 1.5708)"),
+      std::string::npos)
+      << r.reason;
   r = check(s, pathOf({{-6, 0, kHalfPi}, {-6, 0, 0}, {6, 0, 0}}));
   EXPECT_FALSE(r.ok);
-  EXPECT_NE(r.reason.find("not the goal"), std::string::npos);
+  EXPECT_NE(r.reason.find("not at its goal (6, 0, 1.5708)"), std::string::npos) << r.reason;
   // Angles count modulo 2 pi: arriving upside down is arriving.
   r = check(s, pathOf({{-6, 0, kHalfPi}, {-6, 0, 0}, {6, 0, 0}, {6, 0, kHalfPi - 2 * M_PI}}));
   EXPECT_TRUE(r.ok) << r.reason;
@@ -178,7 +181,10 @@ TEST_P(BundledPaths, AcceptedAndCorruptionsRejected) {
     const Outcome rr =
         runMms("check " + quote(scene) + " " + quote(dir.file("bad.json", bad.dump())));
     EXPECT_EQ(rr.code, 1) << bad.dump() << "\n" << rr.out << rr.err;
-    EXPECT_NE(rr.out.find("rejected: segment "), std::string::npos) << rr.out;
+    EXPECT_NE(rr.out.find(expect.rfind(", not at", 0) == 0 ? "rejected: the last waypoint"
+                                                           : "rejected: segment "),
+              std::string::npos)
+        << rr.out;
     EXPECT_NE(rr.out.find(expect), std::string::npos) << rr.out;
   };
   // Shortcut: straight from start to goal.
@@ -196,7 +202,7 @@ TEST_P(BundledPaths, AcceptedAndCorruptionsRejected) {
   // Stops short of the goal.
   bad = good;
   bad["waypoints"].erase(n - 1);
-  rejected(bad, "not the goal");
+  rejected(bad, ", not at its goal (");
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -1,7 +1,9 @@
 #include "Commands.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 
 #include "check/PathChecker.h"
@@ -31,6 +33,16 @@ std::string pose(const Pose& p) {
 Scene readScene(const std::string& file, bool quiet) {
   ImportNotes notes;
   Scene s = loadAnyScene(file, notes);
+  // Degrees given for radians pass every check but plan something else: say so.
+  for (size_t i = 0; i < s.robots.size(); ++i)
+    for (const auto& [end, pose] :
+         {std::pair{"start", s.robots[i].start}, {"goal", s.robots[i].goal}})
+      if (std::fabs(pose.theta) > 2 * M_PI) {
+        std::ostringstream w;
+        w << file << ": robots[" << i << "]." << end << ": angle " << pose.theta
+          << " is more than a full turn; angles are in radians";
+        notes.warnings.push_back(w.str());
+      }
   if (!quiet)
     for (const std::string& w : notes.warnings) std::fprintf(stderr, "mms: note: %s\n", w.c_str());
   return s;
@@ -60,6 +72,10 @@ int check(const CheckArgs& a) {
   settings.maxEvaluations = a.maxEvaluations;
   const PathCheckResult r = checkPath(scene, checker, path.waypoints, settings);
   const size_t segments = path.waypoints.size() - 1;
+  if (!r.ok && r.reason.find("waypoint puts") != std::string::npos) {  // an end, not a motion
+    std::printf("%s: rejected: %s\n", a.path.c_str(), r.reason.c_str());
+    return 1;
+  }
   if (!r.ok) {
     std::printf("%s: rejected: segment %zu (waypoint %zu to %zu) at s = %.6g: %s\n", a.path.c_str(),
                 r.segment, r.segment, std::min(r.segment + 1, segments), r.parameter,

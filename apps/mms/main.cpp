@@ -61,7 +61,15 @@ CLI::Option* memoryLimitOption(CLI::App* cmd, double& v, const std::string& help
   return cmd->add_option("--memory-limit", v, help)->capture_default_str()->check(memoryLimitMb);
 }
 CLI::Option* seedOption(CLI::App* cmd, uint64_t& v, const std::string& help) {
-  return cmd->add_option("--seed", v, help)->capture_default_str();
+  // A negative seed would wrap round to a huge one silently.
+  const CLI::Validator wholeNumber(
+      [](std::string& s) {
+        return s.find_first_not_of("0123456789") == std::string::npos && !s.empty()
+                   ? std::string()
+                   : "'" + s + "' is not a whole number from 0 up";
+      },
+      "UINT");
+  return cmd->add_option("--seed", v, help)->capture_default_str()->check(wholeNumber);
 }
 
 }  // namespace
@@ -120,7 +128,8 @@ int main(int argc, char** argv) {
   seedOption(planCmd, pa.seed, "Random seed (same seed, same path)");
   planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(CLI::Number)
+      ->check(CLI::Range(0.01, 1e6));
   memoryLimitOption(planCmd, pa.memoryMb,
                     "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
   quietFlag(planCmd, pa.quiet, "No progress messages on stderr");
@@ -232,7 +241,8 @@ int main(int argc, char** argv) {
   seedOption(assembleCmd, aa.seed, "Random seed");
   assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1e7));
+      ->check(CLI::Number)
+      ->check(CLI::Range(0.01, 1e7));
   memoryLimitOption(assembleCmd, aa.memoryMb,
                     "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
   assembleCmd->add_flag("--no-pairs", aa.noPairs,
@@ -260,6 +270,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100000));
   benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")
       ->capture_default_str()
+      ->check(CLI::Number)
       ->check(CLI::Range(0.01, 1e6));
   memoryLimitOption(benchCmd, ba.memoryMb, "MB of address space per run (0: none)");
   benchCmd->add_option(

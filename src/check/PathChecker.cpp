@@ -172,10 +172,17 @@ PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker,
     const double posTol = checker.tolerance();
     const double angTol = checker.tolerance() / std::max(1.0, checker.radius(i));
     const std::string who = "robot '" + scene.robots[i].name + "'";
+    auto text = [](const Pose& p) {
+      return "(" + num(p.x) + ", " + num(p.y) + ", " + num(p.theta) + ")";
+    };
     if (!samePose(poseOf(w.front(), i), poseOf(start, i), posTol, angTol))
-      return fail(0, 0, "the first waypoint is not the start of " + who);
+      return fail(0, 0,
+                  "the first waypoint puts " + who + " at " + text(poseOf(w.front(), i)) +
+                      ", not at its start " + text(poseOf(start, i)));
     if (!samePose(poseOf(w.back(), i), poseOf(goal, i), posTol, angTol))
-      return fail(w.size() - 1, 1, "the last waypoint is not the goal of " + who);
+      return fail(w.size() - 1, 1,
+                  "the last waypoint puts " + who + " at " + text(poseOf(w.back(), i)) +
+                      ", not at its goal " + text(poseOf(goal, i)));
     if (scene.robots[i].motion == Motion::Translate)
       for (size_t j = 0; j < w.size(); ++j)
         if (w[j][3 * i + 2] != scene.robots[i].start.theta)

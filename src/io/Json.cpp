@@ -1,6 +1,7 @@
 #include "io/Json.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -61,6 +62,9 @@ Json parseText(const std::string& text, const std::string& source) {
 }
 
 Json parseFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path + ": (file): is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": (file): cannot open for reading");
   in.seekg(0, std::ios::end);

@@ -82,7 +82,17 @@ void checkEndpoints(const Scene& scene, const Node& robots) {
     for (size_t i = 0; i < scene.robots.size(); ++i) {
       const Contact c = checker.robotContact(i, poseOf(q, i));
       const std::string who = "robot '" + scene.robots[i].name + "'";
-      if (c.kind == Contact::Kind::Bounds) robots[i][end].fail(who + " is not inside the bounds");
+      if (c.kind == Contact::Kind::Bounds) {
+        // A shape written where the robot stands in the world lands far from its pose.
+        const Box b = boundingBox(scene.robots[i].shape);
+        const double size = std::max(b.width(), b.height());
+        const bool offOrigin = b.distance(Box{0, 0, 0, 0}) > size;
+        robots[i][end].fail(who + " is not inside the bounds" +
+                            (offOrigin ? std::string(" (its shape is given in the robot's own "
+                                                     "frame and placed at the pose, but its points "
+                                                     "lie far from that frame's origin)")
+                                       : ""));
+      }
       if (c.kind == Contact::Kind::Obstacle)
         robots[i][end].fail(who + " collides with " + c.describe(scene));
     }
