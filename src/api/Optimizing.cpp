@@ -43,6 +43,7 @@ class Optimizing final : public Planner {
     }
     r.stats.phases.emplace_back("optimize", s.seconds + certify.seconds());
     r.stats.counts.emplace_back("optimize_changes", s.accepted);
+    r.stats.counts.emplace_back("optimize_evaluations", s.evaluations);
     return r;
   }
 

@@ -33,27 +33,40 @@ class Optimizer {
       : scene_(scene), checker_(checker), rng_(rng), settings_(settings), stop_(stop), s_(stats) {
     // A candidate stretch is short; one that needs more evaluations slides along contacts and
     // is not worth the time.
-    quick_.maxEvaluations = 20000;
+    quick_.maxEvaluations = settings.candidateEvaluations;
   }
 
   void run(std::vector<Config>& w) {
+    limit_ = settings_.maxWork;
     turnShortWay(w);
-    for (size_t pass = 0; pass < settings_.passes && !stop_(); ++pass) {
+    for (size_t pass = 0; pass < settings_.passes && !done(); ++pass) {
       const size_t before = s_.accepted;
-      for (size_t a = 0; a < settings_.attempts && !stop_() && w.size() >= 2; ++a)
+      for (size_t a = 0; a < settings_.attempts && !done() && w.size() >= 2; ++a)
         shortcut(w, /*partial=*/rng_.below(3) != 0);
       dropStraightWaypoints(w);
       if (s_.accepted == before) break;
     }
-    if (settings_.objective == PathObjective::Clearance) pushAwayFromContacts(w);
+    if (settings_.objective == PathObjective::Clearance) {
+      limit_ = s_.evaluations * workPerEvaluation_ + settings_.maxWork;  // a budget of its own
+      pushAwayFromContacts(w);
+    }
   }
 
  private:
   bool rigid(size_t robot) const { return scene_.robots[robot].motion != Motion::Translate; }
 
+  // Out of work: the attempts' evaluations are spent, or the time limit struck.
+  bool done() const { return s_.evaluations * workPerEvaluation_ >= limit_ || stop_(); }
+
+  PathCheckResult check(const std::vector<Config>& stretch) {
+    const PathCheckResult r = checkMotion(scene_, checker_, stretch, quick_);
+    s_.evaluations += r.evaluations;
+    return r;
+  }
+
   bool certified(const std::vector<Config>& stretch) {
     ++s_.checked;
-    return checkMotion(scene_, checker_, stretch, quick_).ok;
+    return check(stretch).ok;
   }
 
   // A turn of more than half a circle the other way round: the rest of the path is the same
@@ -61,7 +74,7 @@ class Optimizer {
   void turnShortWay(std::vector<Config>& w) {
     for (size_t i = 0; i < scene_.robots.size(); ++i) {
       if (!rigid(i)) continue;
-      for (size_t j = 0; j + 1 < w.size() && !stop_(); ++j) {
+      for (size_t j = 0; j + 1 < w.size() && !done(); ++j) {
         const double d = w[j + 1][3 * i + 2] - w[j][3 * i + 2];
         if (std::fabs(d) <= M_PI + 1e-9) continue;
         const double shift = -2 * M_PI * std::round(d / (2 * M_PI));
@@ -175,7 +188,7 @@ class Optimizer {
   }
 
   double clearanceAt(const Config& q) {
-    const PathCheckResult r = checkMotion(scene_, checker_, {q}, quick_);
+    const PathCheckResult r = check({q});
     return r.ok ? r.minClearance : -1;
   }
 
@@ -189,7 +202,7 @@ class Optimizer {
     for (size_t k = 1; k + 1 < w.size(); ++k)
       step[k] = 0.25 * std::min(segmentCost(checker_, w[k - 1], w[k]),
                                 segmentCost(checker_, w[k], w[k + 1]));
-    for (size_t a = 0; a < attempts && !stop_(); ++a) {
+    for (size_t a = 0; a < attempts && !done(); ++a) {
       const size_t k = 1 + rng_.below(w.size() - 2);
       if (step[k] <= checker_.tolerance()) continue;
       const size_t robot = rng_.below(scene_.robots.size());
@@ -201,9 +214,9 @@ class Optimizer {
         q[3 * robot + 2] += rng_.uniform(-1, 1) * step[k] / std::max(1.0, checker_.radius(robot));
       const std::vector<Config> before{w[k - 1], w[k], w[k + 1]}, after{w[k - 1], q, w[k + 1]};
       ++s_.checked;
-      const PathCheckResult now = checkMotion(scene_, checker_, after, quick_);
+      const PathCheckResult now = check(after);
       if (!now.ok || clearanceAt(q) <= clearanceAt(w[k]) ||
-          now.minClearance < checkMotion(scene_, checker_, before, quick_).minClearance) {
+          now.minClearance < check(before).minClearance) {
         step[k] *= 0.7;
         continue;
       }
@@ -219,6 +232,9 @@ class Optimizer {
   const Termination& stop_;
   OptimizeStats& s_;
   PathCheckSettings quick_;
+  size_t limit_ = 0;  // work at which the current step ends
+  size_t workPerEvaluation_ =
+      scene_.robots.size() + scene_.robots.size() * (scene_.robots.size() - 1) / 2;
 };
 
 }  // namespace

@@ -33,12 +33,18 @@ struct OptimizeSettings {
   size_t attempts = 400;         // shortcut attempts, full and partial, per pass
   size_t passes = 4;             // passes end early once one changes nothing
   size_t clearanceAttempts = 0;  // waypoint moves for the clearance objective (0: 50 per waypoint)
+  /// The certifier's work over all candidates, in clearances of one robot (an evaluation of k
+  /// robots counts k + k(k-1)/2: each robot, each pair), so that a seed fixes the result and k
+  /// robots do not take k^2 times as long; and evaluations per candidate stretch: a stretch
+  /// that needs more slides along contacts.
+  size_t maxWork = 300'000, candidateEvaluations = 4000;
 };
 
 struct OptimizeStats {
   double costBefore = 0, costAfter = 0;
-  size_t accepted = 0;  // changes taken
-  size_t checked = 0;   // candidate stretches given to the certifier
+  size_t accepted = 0;     // changes taken
+  size_t checked = 0;      // candidate stretches given to the certifier
+  size_t evaluations = 0;  // the certifier's evaluations for them (of all robots)
   double seconds = 0;
 };
 
