@@ -169,6 +169,22 @@ TEST(BenchCommand, RecordsRunsResumesShardsAndMerges) {
   r = runMms("bench " + common + " -o " + quote(dir.path("all")));
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("0 runs (4 already recorded)"), std::string::npos) << r.out;
+  // The report says what was measured and how to measure it again.
+  const std::string report = readFile(dir.path("all/report.md"));
+  EXPECT_NE(report.find("limits per run: 10 s, 4096 MB"), std::string::npos) << report;
+  EXPECT_NE(report.find("mms 0."), std::string::npos) << report;
+  EXPECT_NE(report.find(" bench " + scenario("translating/cup.json")), std::string::npos) << report;
+  EXPECT_NE(readFile(dir.path("all/runs.jsonl")).find("\"version\":\"0."), std::string::npos);
+  // Resuming with another limit would mix two benchmarks in one table: refused, nothing run.
+  for (const std::string other : {"--time-limit 0.05", "--time-limit 10 --memory-limit 2048"}) {
+    r = runMms("bench " + scene + " --planners mms,prm-bridge --runs 2 " + other + " -o " +
+               quote(dir.path("all")));
+    EXPECT_EQ(r.code, 2) << other;
+    EXPECT_NE(r.err.find("runs.jsonl: (resume): its runs were made with --"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(lines(r.err), 1u) << r.err;
+  }
+  EXPECT_EQ(lines(readFile(dir.path("all/runs.jsonl"))), 4u);
   // Two shards cover the run list disjointly; merged they hold every run once.
   for (const char* k : {"1", "2"})
     ASSERT_EQ(runMms("bench " + common + " --shard " + k + "/2 -o " +

@@ -9,6 +9,7 @@
 #include "Commands.h"
 #include "mms/Errors.h"
 #include "mms/Planner.h"
+#include "mms/mms.h"
 #include "util/CommandBoundary.h"
 #include "util/Interrupt.h"
 #include "util/MemoryLimit.h"
@@ -81,7 +82,7 @@ int main(int argc, char** argv) {
       "mms: motion planning via manifold samples for planar polygonal robots.\n"
       "Scene and path formats: docs/formats.md. Exit codes: 0 success, 1 negative answer,\n"
       "2 bad input, 3 internal error."};
-  app.set_version_flag("--version", "mms 0.1.0");
+  app.set_version_flag("--version", std::string("mms ") + mms::version());
   app.require_subcommand(1);
 
   ValidateArgs va;
@@ -399,6 +400,15 @@ int main(int argc, char** argv) {
         }
         if (*assembleCmd) return assemble(aa);
         if (*benchCmd) {
+          for (int i = 0; i < argc; ++i) {
+            // Quoted where a shell would split it, so that the logged command runs again.
+            const std::string arg = argv[i];
+            const bool plain = !arg.empty() && arg.find_first_of(" \t'\"$\\") == std::string::npos;
+            if (i) ba.command += ' ';
+            if (!plain) ba.command += '\'';
+            ba.command += arg;
+            if (!plain) ba.command += '\'';
+          }
           ba.planners.clear();
           for (const std::string& p : mms::split(plannersList, ',')) {
             if (std::find(plannerNames.begin(), plannerNames.end(), p) == plannerNames.end())

@@ -35,7 +35,8 @@ nlohmann::json RunRecord::toJson() const {
           {"manifolds_built", manifoldsBuilt},
           {"manifolds_used", manifoldsUsed},
           {"detail", detail},
-          {"solved_by", solvedBy}};
+          {"solved_by", solvedBy},
+          {"version", version}};
 }
 
 RunRecord RunRecord::fromJson(const nlohmann::json& j) {
@@ -61,6 +62,7 @@ RunRecord RunRecord::fromJson(const nlohmann::json& j) {
   r.manifoldsUsed = j.value("manifolds_used", size_t(0));
   r.solvedBy = j.value("solved_by", "");
   r.detail = j.value("detail", "");
+  r.version = j.value("version", "");
   return r;
 }
 

@@ -28,6 +28,7 @@ struct RunRecord {
   size_t manifoldsBuilt = 0, manifoldsUsed = 0;
   std::string detail;    // why a run failed, when known
   std::string solvedBy;  // the portfolio's member that found the path (auto), else ""
+  std::string version;   // mms's version that ran it ("" in records of older versions)
 
   bool solved() const { return status == "found"; }
   /// A found run whose process took longer than the limit allows (the limit plus 2 % or

@@ -25,6 +25,7 @@
 #include "io/SceneIO.h"
 #include "mms/Errors.h"
 #include "mms/Planner.h"
+#include "mms/mms.h"
 #include "scenarios/Generators.h"
 #include "util/AtomicFile.h"
 #include "util/MemoryLimit.h"
@@ -140,7 +141,26 @@ void writeBenchReports(const std::string& dir) {
                    "over solved runs "
                    "without the fastest and the slowest, median over all runs (an unsolved run "
                    "counts as infinite).\n\n";
-  md += "## MMS and the portfolio against the best other planner\n\n" + speedupReport(summaries) +
+  // What was measured, and how: enough to run it again.
+  std::set<std::string> versions, limits;
+  for (const RunRecord& r : unique) {
+    versions.insert(r.version.empty() ? "unrecorded" : r.version);
+    limits.insert(
+        formatNumber(r.timeLimit) + " s, " +
+        (r.memoryLimitMb > 0 ? formatNumber(r.memoryLimitMb) + " MB" : "no memory limit"));
+  }
+  auto joined = [](const std::set<std::string>& s) {
+    std::string out;
+    for (const std::string& x : s) out += (out.empty() ? "" : "; ") + x;
+    return out;
+  };
+  md += "mms " + joined(versions) + "; limits per run: " + joined(limits) + ".\n";
+  if (std::ifstream commands(dir + "/commands.txt"); commands) {
+    md += "\nCommands:\n\n```\n";
+    for (std::string line; std::getline(commands, line);) md += line + "\n";
+    md += "```\n";
+  }
+  md += "\n## MMS and the portfolio against the best other planner\n\n" + speedupReport(summaries) +
         "\n## All runs\n\n";
   md += markdownReport(fixed, "");
   if (!swept.empty()) {
@@ -224,6 +244,7 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
         j.record.seed = seed;
         j.record.timeLimit = a.timeLimit;
         j.record.memoryLimitMb = a.memoryMb;
+        j.record.version = version();
         j.args = {"plan",
                   s.file,
                   "--planner",
@@ -251,8 +272,33 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
     done.insert(key(r));
     if (!r.solved()) ++failures[group(r)];
   };
-  if (fs::exists(runsFile))
-    for (const RunRecord& r : readRuns(runsFile)) count(r);
+  if (fs::exists(runsFile)) {
+    // A resumed benchmark must measure what the recorded runs measured: refuse other limits
+    // or another mms, rather than mixing them in one table.
+    std::map<std::string, const Job*> planned;
+    for (const Job& j : jobs) planned[key(j.record)] = &j;
+    for (const RunRecord& r : readRuns(runsFile)) {
+      count(r);
+      const auto it = planned.find(key(r));
+      if (it == planned.end()) continue;
+      const RunRecord& now = it->second->record;
+      auto differs = [&](const std::string& what, const std::string& then,
+                         const std::string& asked) {
+        throw InputError(runsFile + ": (resume): its runs were made with " + what + " " + then +
+                         ", this run asks for " + asked +
+                         "; use another output folder, or the same settings to resume");
+      };
+      if (r.timeLimit != now.timeLimit)
+        differs("--time-limit", formatNumber(r.timeLimit), formatNumber(now.timeLimit));
+      if (r.memoryLimitMb != now.memoryLimitMb)
+        differs("--memory-limit", formatNumber(r.memoryLimitMb), formatNumber(now.memoryLimitMb));
+      if (!r.version.empty() && r.version != now.version) differs("mms", r.version, now.version);
+    }
+  }
+  if (!a.command.empty()) {
+    std::ofstream log(a.output + "/commands.txt", std::ios::app);
+    log << a.command << "\n";
+  }
   // With --stop-decided, a group's median is decided as unsolved once this many runs failed
   // (the median of N runs, unsolved ones infinite, is infinite from ceil(N / 2) failures on).
   const size_t decided = (a.runs + 1) / 2;

@@ -20,6 +20,7 @@ struct BenchSettings {
   size_t shardIndex = 1, shardCount = 1;  // run only the shardIndex-th of shardCount parts
   size_t jobs = 1;                        // cores to fill
   bool stopDecided = false;  // skip a group's seeds once its median is decided as unsolved
+  std::string command;       // the command line, logged in DIR/commands.txt and report.md
 };
 
 struct BenchOutcome {

@@ -7,6 +7,8 @@
 #include <deque>
 #include <map>
 
+#include "mms/Termination.h"
+
 namespace mms {
 namespace {
 
@@ -29,11 +31,17 @@ Vec2 toVec(const P& p) { return {p.x(), p.y()}; }
 std::optional<std::vector<Vec2>> routeInCell(const std::vector<Ring>& rings,
                                              const std::function<bool(Vec2)>& inCell, Vec2 a,
                                              Vec2 b) {
+  // A cell among thousands of obstacles takes seconds to triangulate and classify: the
+  // planner's time limit is checked as it goes (checkpoint throws Stopped).
   CDT cdt;
+  size_t steps = 0;
   for (const Ring& r : rings)
-    for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+    for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++) {
+      if (++steps % 16 == 0) checkpoint();
       if (!(r[j] == r[i])) cdt.insert_constraint(P(r[j].x, r[j].y), P(r[i].x, r[i].y));
+    }
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (++steps % 16 == 0) checkpoint();
     const Vec2 c = (1.0 / 3) * (toVec(f->vertex(0)->point()) + toVec(f->vertex(1)->point()) +
                                 toVec(f->vertex(2)->point()));
     f->info().inside = inCell(c);

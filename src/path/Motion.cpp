@@ -12,6 +12,7 @@ std::optional<std::vector<Config>> graphPathMotion(const Roadmap& roadmap,
                                                    const Config& start, const Config& goal) {
   std::vector<Config> w{start};
   for (size_t i = 0; i < nodes.size(); ++i) {
+    checkpoint();  // the planner's time limit, between cells
     const Manifold& here = roadmap.manifold(roadmap.graph().node(nodes[i]).manifold);
     Config exit = goal;
     if (i + 1 < nodes.size()) {
@@ -47,7 +48,8 @@ void shortcutPath(const Scene& scene, const CollisionChecker& checker, Random& r
   // A short path offers few pairs, so attempts repeat them: a refused straight motion stays
   // refused (the check is deterministic), and is not checked again. Same result, less work.
   std::set<std::pair<Config, Config>> refused;
-  for (size_t attempt = 0; attempt < attempts && w.size() > 2; ++attempt) {
+  const Termination* stop = StopScope::current();
+  for (size_t attempt = 0; attempt < attempts && w.size() > 2 && !(stop && (*stop)()); ++attempt) {
     size_t i = rng.below(w.size()), j = rng.below(w.size());
     if (i > j) std::swap(i, j);
     if (j < i + 2) continue;
@@ -65,7 +67,12 @@ CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& chec
                                 Random& rng, const ShortcutSettings& shortcuts) {
   CertifiedMotion m;
   Stopwatch build;
-  auto w = graphPathMotion(roadmap, nodes, startConfig(scene), goalConfig(scene));
+  std::optional<std::vector<Config>> w;
+  try {
+    w = graphPathMotion(roadmap, nodes, startConfig(scene), goalConfig(scene));
+  } catch (const Stopped&) {
+    // The limit struck: no motion, and its time still counted.
+  }
   m.buildSeconds = build.seconds();
   if (!w) return m;
   Stopwatch shortcut;

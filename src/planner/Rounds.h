@@ -63,8 +63,10 @@ RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from
         out.end = RoundsOutcome::End::Found;
         return out;
       }
-      ++stats.rejectedPaths;
-      h.refused();
+      if (!stop()) {  // refused by the certifier, not cut short by the limit
+        ++stats.rejectedPaths;
+        h.refused();
+      }
     }
     h.report();
     if (stop()) {
