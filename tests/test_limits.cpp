@@ -156,3 +156,22 @@ TEST(Limits, UnwritableOutputsAreRefusedBeforeThePlanStarts) {
 }
 
 }  // namespace mms
+
+namespace mms {
+
+// One manifold among thousands of obstacles takes longer than the planners' progress reports
+// come (between manifolds): a long silent run still says it is working, within its limit.
+TEST(Limits, ALongManifoldStillShowsProgress) {
+  test::TempDir dir;
+  const std::string scene = dir.path("big.json");
+  ASSERT_EQ(
+      test::runMms("scenario random --seed 4 --robots 2 --obstacles 2000 -o " + test::quote(scene))
+          .code,
+      0);
+  const test::Outcome r =
+      test::runMms("plan " + test::quote(scene) + " --planner mms --time-limit 6 -o " +
+                   test::quote(dir.path("p.json")));
+  EXPECT_NE(r.err.find("mms plan: 5.0 s, "), std::string::npos) << r.err;
+}
+
+}  // namespace mms

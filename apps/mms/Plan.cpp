@@ -1,5 +1,10 @@
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
+#include <thread>
 
 #include "Commands.h"
 #include "io/PathIO.h"
@@ -160,16 +165,50 @@ int plan(const PlanArgs& a) {
       label = a.queries + " query " + std::to_string(qi);
     }
     Stopwatch clock;
+    std::atomic<double> lastReport{0};
     auto progress = [&](const PlanStatistics& s) {
       if (a.quiet || clock.seconds() < 1.0) return;
       std::fprintf(stderr, "mms plan: %.1f s, round %zu: %s, graph %zu nodes / %zu edges\n",
                    clock.seconds(), s.rounds, countsText(s).c_str(), s.graphNodes, s.graphEdges);
+      lastReport = clock.seconds();
+    };
+    // A planner reports between manifolds; one manifold among thousands of obstacles takes
+    // longer than a user waits in silence. Between its reports, a line every 5 s says it works.
+    std::mutex m;
+    std::condition_variable wake;
+    bool finished = false;
+    std::thread heartbeat;
+    if (!a.quiet)
+      heartbeat = std::thread([&] {
+        std::unique_lock lock(m);
+        while (!wake.wait_for(lock, std::chrono::seconds(1), [&] { return finished; }))
+          if (clock.seconds() - lastReport >= 5)
+            std::fprintf(stderr,
+                         "mms plan: %.1f s, still working (building manifolds; %.0f s left)\n",
+                         clock.seconds(), std::max(0.0, a.timeLimit - processClock().seconds())),
+                lastReport = clock.seconds();
+      });
+    auto stopHeartbeat = [&] {
+      if (!heartbeat.joinable()) return;
+      {
+        std::lock_guard lock(m);
+        finished = true;
+      }
+      wake.notify_all();
+      heartbeat.join();
     };
     // The limit holds for the whole command: what reading the scene and making the planner
     // took (a thousand obstacles: tens of ms) comes off the first query's time.
     const double limit =
         qi == 0 ? std::max(0.0, a.timeLimit - processClock().seconds()) : a.timeLimit;
-    const PlanResult r = planner->solve(Termination(limit, sigintFlag()), progress);
+    PlanResult r;
+    try {
+      r = planner->solve(Termination(limit, sigintFlag()), progress);
+    } catch (...) {
+      stopHeartbeat();
+      throw;
+    }
+    stopHeartbeat();
     if (interruptRequested()) throw Interrupted();
     summaries.push_back(toJson(summarize(a.scene, a.planner, a.seed, a.timeLimit, r)));
     const bool many = queries.size() > 1;
