@@ -111,3 +111,12 @@ TEST(Render, EachRobotHasItsColourAndItsNameInALegend) {
   EXPECT_EQ(renderSvg(one, nullptr).find("id=\"legend\""), std::string::npos);
   EXPECT_EQ(renderHtmlViewer(one, nullptr).find("id=\"legend\""), std::string::npos);
 }
+
+// The viewer's picture follows the window: sized on load and on every resize, not fixed.
+TEST(Render, ViewerCanvasFollowsTheWindow) {
+  const Scene s = loadScene(scenario("one-robot/bar-slot.json"));
+  const std::string html = renderHtmlViewer(s, nullptr);
+  EXPECT_NE(html.find("window.addEventListener('resize', fit)"), std::string::npos);
+  EXPECT_NE(html.find("window.innerWidth / W"), std::string::npos);
+  EXPECT_EQ(html.find("cv.style.width = W + 'px'"), std::string::npos);  // the fixed size before
+}

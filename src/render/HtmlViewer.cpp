@@ -15,7 +15,16 @@ const W = D.canvasWidth, PAD = D.pad, B = D.bounds;
 const S = (W - 2 * PAD) / (B[2] - B[0]);
 const H = Math.round((B[3] - B[1]) * S + 2 * PAD);
 const cv = document.getElementById('view');
-cv.width = W; cv.height = H; cv.style.width = W + 'px'; cv.style.height = H + 'px';
+cv.width = W; cv.height = H;
+// The picture fills the window, as large as fits beside the controls, and follows it when it
+// is resized (the drawing is scaled, not redrawn).
+function fit() {
+  const below = document.body.scrollHeight - cv.offsetHeight;
+  const k = Math.max(0.1, Math.min(window.innerWidth / W, (window.innerHeight - below) / H));
+  cv.style.width = Math.floor(W * k) + 'px'; cv.style.height = Math.floor(H * k) + 'px';
+}
+window.addEventListener('resize', fit);
+window.addEventListener('load', fit);
 const g = cv.getContext('2d');
 const px = p => [PAD + (p[0] - B[0]) * S, PAD + (B[3] - p[1]) * S];
 const COLOURS = D.colours;
