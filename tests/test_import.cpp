@@ -17,6 +17,7 @@
 #include "io/OmplApp.h"
 #include "io/PathIO.h"
 #include "io/SceneIO.h"
+#include "mms/Errors.h"
 #include "render/HtmlViewer.h"
 
 namespace mms {
@@ -393,6 +394,80 @@ TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {
         EXPECT_FALSE(isRobot(px, w, viewerPixel(s, {x, 3}))) << t << dx;
       }
     }
+  }
+}
+
+
+// OMPL.app's .path files are read where mms reads paths: angles unwrapped as OMPL interpolates
+// them (the short way), bad lines named; what mms exports reads back and certifies.
+TEST(Import, OmplPathFilesAreReadUnwrappedAndCheckedLineByLine) {
+  const Scene s = loadScene(test::scenario("one-robot/bar-slot.json"));
+  const std::vector<Config> w = parseOmplPath("1 2 3.1\n\n1 2 -3.1\n1 2.5 3.0\n", "p.path", s);
+  ASSERT_EQ(w.size(), 3u);
+  EXPECT_NEAR(w[1][2], 3.1 + (2 * M_PI - 6.2), 1e-12);  // across pi, not back round
+  EXPECT_NEAR(w[2][2], w[1][2] + std::remainder(3.0 - w[1][2], 2 * M_PI), 1e-12);
+  auto error = [&](const std::string& text) {
+    try {
+      parseOmplPath(text, "p.path", s);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error("1 2 3\n1 x 3\n"), "p.path: line 2: 'x' is not a number");
+  EXPECT_EQ(error("1 2 3 4\n"),
+            "p.path: line 1: expected 3 numbers (x y theta per robot, x y for one that "
+            "translates), found 4");
+  EXPECT_NE(error("\n \n").find("no waypoints"), std::string::npos);
+
+  TempDir dir;
+  const std::string scene = quote(test::scenario("one-robot/bar-slot.json")),
+                    json = dir.path("p.json"), text = dir.path("p.path");
+  ASSERT_EQ(runMms("plan " + scene + " -q -o " + quote(json)).code, 0);
+  ASSERT_EQ(runMms("export " + scene + " " + quote(json) + " --to ompl-path -q -o " + quote(text))
+                .code,
+            0);
+  const auto c = runMms("check " + scene + " " + quote(text));
+  EXPECT_EQ(c.code, 0) << c.out << c.err;
+  const auto bad = runMms("check " + scene + " " + quote(dir.file("bad.path", "0 0 0\n1 1\n")));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("bad.path: line 2: expected 3 numbers"), std::string::npos) << bad.err;
+  const auto cfgs = omplAppProblems();
+  if (cfgs.empty()) {
+    std::printf("OMPL.app's problems are absent (%s): their .path files not read\n",
+                kOmplApp.c_str());
+    return;
+  }
+  const auto maze = runMms("check " + quote(kOmplApp + "/Maze_planar.cfg") + " " +
+                           quote(kOmplApp + "/Maze_planar.path"));
+  EXPECT_EQ(maze.code, 0) << maze.out << maze.err;
+}
+
+
+// discopygal scenes have no bounds: the import invents a box unless told one.
+TEST(Import, DiscopygalBoundsCanBeGiven) {
+  TempDir dir;
+  const std::string file = dir.file("d.json", discopygalScene()), out = dir.path("out.json");
+  auto r = runMms("import " + quote(file) + " --bounds -20,-10,20,10 -o " + quote(out));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("bounds: none in discopygal"), std::string::npos) << r.err;
+  const Scene s = loadScene(out);
+  EXPECT_EQ(s.bounds.xmin, -20);
+  EXPECT_EQ(s.bounds.ymin, -10);
+  EXPECT_EQ(s.bounds.xmax, 20);
+  EXPECT_EQ(s.bounds.ymax, 10);
+  // Too small for the robots: named, one line, nothing written.
+  const std::string small = dir.path("small.json");
+  r = runMms("import " + quote(file) + " --bounds -3,-3,3,3 -o " + quote(small));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("(with --bounds -3,-3,3,3): robots[0].start: robot 'tri' is not inside"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(small));
+  for (const std::string bad : {"1,2,3", "0,0,a,1", "5,0,1,1"}) {
+    r = runMms("import " + quote(file) + " --bounds " + bad + " -o " + quote(small));
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("--bounds: '"), std::string::npos) << r.err;
   }
 }
 

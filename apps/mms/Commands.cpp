@@ -165,8 +165,39 @@ int scenario(const ScenarioArgs& a) {
 }
 
 int importScene(const ImportArgs& a) {
-  const Scene s = readScene(a.input, a.quiet);
-  saveScene(s, a.output);
+  checkWritable(a.output, "-o");
+  if (a.bounds.empty()) {
+    saveScene(readScene(a.input, a.quiet), a.output);
+  } else {
+    std::vector<double> v;
+    std::istringstream in(a.bounds);
+    in.imbue(std::locale::classic());
+    for (std::string part; std::getline(in, part, ',');) {
+      size_t used = 0;
+      double x = 0;
+      try {
+        x = std::stod(part, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != part.size() || !std::isfinite(x))
+        throw InputError("--bounds: '" + part + "' is not a number (expected XMIN,YMIN,XMAX,YMAX)");
+      v.push_back(x);
+    }
+    if (v.size() != 4 || v[0] >= v[2] || v[1] >= v[3])
+      throw InputError("--bounds: '" + a.bounds +
+                       "' is not XMIN,YMIN,XMAX,YMAX with XMIN < XMAX and YMIN < YMAX");
+    ImportNotes notes;
+    Scene s = loadAnyScene(a.input, notes);
+    s.bounds = {v[0], v[1], v[2], v[3]};
+    // Validated again in the new bounds: a robot or obstacle outside them is named.
+    s = parseScene(sceneToJson(s), a.input + " (with --bounds " + a.bounds + ")");
+    if (!a.quiet)
+      for (const std::string& w : notes.warnings)
+        if (w.rfind("bounds:", 0) != 0) std::fprintf(stderr, "mms: note: %s\n", w.c_str());
+    saveScene(s, a.output);
+  }
+  const Scene s = loadScene(a.output);
   if (!a.quiet) {
     size_t vertices = 0;
     for (const Ring& o : s.obstacles) vertices += o.size();

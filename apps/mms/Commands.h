@@ -119,6 +119,7 @@ namespace mms::cli {
 
 struct ImportArgs {
   std::string input, output;
+  std::string bounds;  // "XMIN,YMIN,XMAX,YMAX", or empty
   bool quiet = false;
 };
 int importScene(const ImportArgs& a);

@@ -325,6 +325,10 @@ int main(int argc, char** argv) {
   importCmd->add_option("FILE", ia.input, "OMPL.app .cfg or discopygal .json")->required();
   outputOption(importCmd, ia.output, "Scene file to write");
   quietFlag(importCmd, ia.quiet, "Print nothing on success");
+  importCmd->add_option("--bounds", ia.bounds,
+                        "XMIN,YMIN,XMAX,YMAX: the workspace, instead of the one the file gives "
+                        "(discopygal scenes give none: by default the box around obstacles and "
+                        "robots, grown by 5 %)");
 
   ExportArgs ea;
   auto* exportCmd = app.add_subcommand(

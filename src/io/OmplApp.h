@@ -20,4 +20,5 @@ Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes);
 /// Writes a path as OMPL.app's .path text: one "x y theta" line per waypoint (one rigid robot).
 std::string omplPathText(const std::vector<Config>& waypoints);
 
+
 }  // namespace mms

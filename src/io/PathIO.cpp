@@ -1,6 +1,12 @@
 #include "io/PathIO.h"
 
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include "io/Json.h"
+#include "mms/Errors.h"
 #include "util/AtomicFile.h"
 
 namespace mms {
@@ -44,7 +50,71 @@ Path parsePath(const nlohmann::json& doc, const std::string& source, const Scene
   return path;
 }
 
+std::vector<Config> parseOmplPath(const std::string& text, const std::string& source,
+                                  const Scene& scene) {
+  size_t rigid = 0;
+  for (const Robot& r : scene.robots) rigid += r.motion != Motion::Translate;
+  const size_t full = 3 * scene.robots.size(), compact = full - (scene.robots.size() - rigid);
+  std::vector<Config> w;
+  std::istringstream lines(text);
+  size_t lineNo = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++lineNo;
+    const std::string where = source + ": line " + std::to_string(lineNo) + ": ";
+    std::istringstream in(line);
+    in.imbue(std::locale::classic());
+    std::vector<double> v;
+    std::string token;
+    while (in >> token) {
+      size_t used = 0;
+      double x = 0;
+      try {
+        x = std::stod(token, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != token.size() || !std::isfinite(x))
+        throw InputError(where + "'" + token + "' is not a number");
+      v.push_back(x);
+    }
+    if (v.empty()) continue;
+    if (v.size() != full && v.size() != compact)
+      throw InputError(where + "expected " + std::to_string(compact) + " numbers (x y theta per " +
+                       "robot, x y for one that translates), found " + std::to_string(v.size()));
+    if (w.size() >= kMaxWaypoints) throw InputError(where + "more than 10^7 waypoints");
+    Config q(full);
+    for (size_t i = 0, k = 0; i < scene.robots.size(); ++i) {
+      q[3 * i] = v[k++];
+      q[3 * i + 1] = v[k++];
+      const bool angle = v.size() == full || scene.robots[i].motion != Motion::Translate;
+      q[3 * i + 2] = angle ? v[k++] : scene.robots[i].start.theta;
+      if (!w.empty() && scene.robots[i].motion != Motion::Translate) {
+        const double prev = w.back()[3 * i + 2];
+        q[3 * i + 2] = prev + std::remainder(q[3 * i + 2] - prev, 2 * M_PI);
+      }
+    }
+    w.push_back(std::move(q));
+  }
+  if (w.empty()) throw InputError(source + ": (file): no waypoints (an OMPL.app path has one line per state)");
+  return w;
+}
+
 Path loadPath(const std::string& file, const Scene& scene) {
+  // OMPL.app's .path files are numbers, one line per state; ours are JSON.
+  if (std::filesystem::path(file).extension() == ".path") {
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec))
+      throw InputError(file + ": (file): is a folder, not a file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw InputError(file + ": (file): cannot open for reading");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (text.str().size() > json_in::kMaxFileBytes)
+      throw InputError(file + ": (file): larger than 256 MiB");
+    Path p;
+    p.waypoints = parseOmplPath(text.str(), file, scene);
+    return p;
+  }
   return parsePath(json_in::parseFile(file), file, scene);
 }
 

@@ -23,6 +23,12 @@ struct Path {
 Path loadPath(const std::string& file, const Scene& scene);
 Path parsePath(const nlohmann::json& doc, const std::string& source, const Scene& scene);
 
+/// Reads OMPL.app's .path text (PathGeometric::printAsMatrix): one line per state, "x y theta"
+/// per robot (or "x y" for a robot that only translates). OMPL interpolates angles the short
+/// way; the waypoints are unwrapped to say the same. Throws InputError ("FILE: line N: ...").
+std::vector<Config> parseOmplPath(const std::string& text, const std::string& source,
+                                  const Scene& scene);
+
 nlohmann::json pathToJson(const Path& path, const Scene& scene);
 void savePath(const Path& path, const Scene& scene, const std::string& file);
 
