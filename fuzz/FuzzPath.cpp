@@ -31,6 +31,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace mms;
   const Scene& scene = fixedScene();
   const std::string text(reinterpret_cast<const char*>(data), size);
+  // OMPL.app's .path text too: mms reads it wherever it reads a path (files named *.path).
+  if (!text.empty() && text[0] != '{') {
+    try {
+      const std::vector<Config> w = parseOmplPath(text, "fuzz.path", scene);
+      fuzz::require(!w.empty(), "an OMPL path without waypoints was accepted");
+      for (const Config& q : w) fuzz::require(q.size() == 6, "a waypoint of the wrong size");
+    } catch (const InputError& e) {
+      fuzz::requireOneLine(e, "fuzz.path: ");
+    }
+    return 0;
+  }
   try {
     const Path path =
         parsePath(json_in::parseText(text, "fuzz.path.json"), "fuzz.path.json", scene);

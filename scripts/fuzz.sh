@@ -20,17 +20,21 @@ bash scripts/setup.sh
 # -O1 keeps assertions (no NDEBUG) while staying fast enough for millions of runs.
 cmake -S . -B build-fuzz -DMMS_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=None \
   -DCMAKE_CXX_FLAGS="-O1" -DMMS_BUILD_TESTS=OFF -DMMS_BUILD_BENCH=OFF >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target FuzzScene FuzzPath
+targets="FuzzScene:scene FuzzPath:path FuzzDiscopygal:discopygal FuzzOmplCfg:cfg FuzzCollada:collada FuzzQueries:queries"
+cmake --build build-fuzz -j"$(nproc)" --target FuzzScene FuzzPath FuzzDiscopygal FuzzOmplCfg FuzzCollada FuzzQueries
 
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 mkdir -p build-fuzz/crashes
 status=0
-for pair in FuzzScene:scene FuzzPath:path; do
+for pair in $targets; do
   target=${pair%%:*} corpus=${pair##*:}
+  # JSON readers get the JSON dictionary; the INI and XML readers find their tokens alone.
+  dict=()
+  case $corpus in scene | path | discopygal | queries) dict=(-dict=fuzz/json.dict) ;; esac
   mkdir -p "build-fuzz/corpus/$corpus"
   log="build-fuzz/$target.log"
   if ! "build-fuzz/$target" "${limit[@]}" -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
-      -dict=fuzz/json.dict -artifact_prefix="build-fuzz/crashes/$target-" -print_final_stats=1 \
+      "${dict[@]}" -artifact_prefix="build-fuzz/crashes/$target-" -print_final_stats=1 \
       "build-fuzz/corpus/$corpus" "fuzz/corpus/$corpus" >"$log" 2>&1; then
     echo "fuzz: $target FAILED; input in build-fuzz/crashes/, log $log:" >&2
     tail -n 40 "$log" >&2

@@ -13,8 +13,10 @@
 #include "check/PathChecker.h"
 #include "geometry/PolygonOps.h"
 #include "io/AnyScene.h"
+#include "io/Collada.h"
 #include "io/Discopygal.h"
 #include "io/OmplApp.h"
+#include "io/OmplAppCfg.h"
 #include "io/PathIO.h"
 #include "io/SceneIO.h"
 #include "mms/Errors.h"
@@ -397,7 +399,6 @@ TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {
   }
 }
 
-
 // OMPL.app's .path files are read where mms reads paths: angles unwrapped as OMPL interpolates
 // them (the short way), bad lines named; what mms exports reads back and certifies.
 TEST(Import, OmplPathFilesAreReadUnwrappedAndCheckedLineByLine) {
@@ -424,9 +425,9 @@ TEST(Import, OmplPathFilesAreReadUnwrappedAndCheckedLineByLine) {
   const std::string scene = quote(test::scenario("one-robot/bar-slot.json")),
                     json = dir.path("p.json"), text = dir.path("p.path");
   ASSERT_EQ(runMms("plan " + scene + " -q -o " + quote(json)).code, 0);
-  ASSERT_EQ(runMms("export " + scene + " " + quote(json) + " --to ompl-path -q -o " + quote(text))
-                .code,
-            0);
+  ASSERT_EQ(
+      runMms("export " + scene + " " + quote(json) + " --to ompl-path -q -o " + quote(text)).code,
+      0);
   const auto c = runMms("check " + scene + " " + quote(text));
   EXPECT_EQ(c.code, 0) << c.out << c.err;
   const auto bad = runMms("check " + scene + " " + quote(dir.file("bad.path", "0 0 0\n1 1\n")));
@@ -442,7 +443,6 @@ TEST(Import, OmplPathFilesAreReadUnwrappedAndCheckedLineByLine) {
                            quote(kOmplApp + "/Maze_planar.path"));
   EXPECT_EQ(maze.code, 0) << maze.out << maze.err;
 }
-
 
 // discopygal scenes have no bounds: the import invents a box unless told one.
 TEST(Import, DiscopygalBoundsCanBeGiven) {
@@ -469,6 +469,36 @@ TEST(Import, DiscopygalBoundsCanBeGiven) {
     EXPECT_EQ(r.code, 2) << bad;
     EXPECT_NE(r.err.find("--bounds: '"), std::string::npos) << r.err;
   }
+}
+
+// Found by fuzzing the readers: each was an exception other than InputError or a stack overflow.
+TEST(Import, FuzzedReadersFailWithOneLine) {
+  auto error = [](auto&& read) {
+    try {
+      read();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // The INI reader read the section's name on past "]" (here a NUL): no [problem] section.
+  EXPECT_EQ(error([] { parseOmplAppProblem(std::string("[problem]\0x\n[a]\n", 15), "f.cfg"); }),
+            "f.cfg: [problem]: no such section");
+  // A <vertices> whose POSITION input is itself.
+  const std::string loop = R"(<COLLADA><library_geometries><geometry id="g"><mesh>
+    <vertices id="v"><input semantic="POSITION" source="#v"/></vertices>
+    <triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 0 0</p></triangles>
+    </mesh></geometry></library_geometries><library_visual_scenes><visual_scene id="s"><node>
+    <instance_geometry url="#g"/></node></visual_scene></library_visual_scenes></COLLADA>)";
+  EXPECT_NE(error([&] { parseColladaPlanar(loop, "f.dae"); }).find("refer to each other in a loop"),
+            std::string::npos);
+  // Elements nested 200 000 deep.
+  std::string deep = "<COLLADA>";
+  for (int i = 0; i < 200000; ++i) deep += "<a>";
+  for (int i = 0; i < 200000; ++i) deep += "</a>";
+  deep += "</COLLADA>";
+  EXPECT_EQ(error([&] { parseColladaPlanar(deep, "f.dae"); }),
+            "f.dae: <library_visual_scenes>: no visual scene");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "io/Collada.h"
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <pugixml.hpp>
@@ -75,17 +76,28 @@ class Reader {
   }
 
  private:
-  void index(const pugi::xml_node& n) {
-    if (auto id = n.attribute("id")) ids_.emplace(id.value(), n);
-    for (pugi::xml_node c : n.children()) index(c);
+  // Without recursion: a document nested a hundred thousand levels deep must not overflow the
+  // stack (the fuzzer wrote one).
+  void index(const pugi::xml_node& root) {
+    std::vector<pugi::xml_node> todo{root};
+    while (!todo.empty()) {
+      const pugi::xml_node n = todo.back();
+      todo.pop_back();
+      if (auto id = n.attribute("id")) ids_.emplace(id.value(), n);
+      for (pugi::xml_node c : n.children()) todo.push_back(c);
+    }
   }
 
-  // Positions of a <vertices> or <source> element: (x, y, z) triples.
-  std::vector<double> positions(const pugi::xml_node& input) const {
+  // Positions of a <vertices> or <source> element: (x, y, z) triples. A <vertices> refers to a
+  // source; references that loop are refused.
+  std::vector<double> positions(const pugi::xml_node& input, int depth = 0) const {
+    if (depth > 8)
+      throw InputError(file_ + ": <vertices>: POSITION inputs refer to each other in a loop");
     pugi::xml_node src = byId(input.attribute("source").value(), "<input source>");
     if (std::string(src.name()) == "vertices") {
       for (pugi::xml_node in : src.children("input"))
-        if (std::string(in.attribute("semantic").value()) == "POSITION") return positions(in);
+        if (std::string(in.attribute("semantic").value()) == "POSITION")
+          return positions(in, depth + 1);
       throw InputError(file_ + ": <vertices id='" + src.attribute("id").value() +
                        "'>: no POSITION input");
     }
@@ -117,7 +129,12 @@ class Reader {
     // The plane of these files is the transformed mesh's X/Z.
     auto planar = [&](size_t i) {
       const double x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
-      return Vec2{m[0] * x + m[1] * y + m[2] * z + m[3], m[8] * x + m[9] * y + m[10] * z + m[11]};
+      const Vec2 v{m[0] * x + m[1] * y + m[2] * z + m[3], m[8] * x + m[9] * y + m[10] * z + m[11]};
+      if (!std::isfinite(v.x) || !std::isfinite(v.y))
+        throw InputError(file_ +
+                         ": <triangles>: a vertex beyond the range of numbers once the "
+                         "nodes' matrices are applied");
+      return v;
     };
     for (size_t i = 0; i < count; ++i) {
       const Vec2 v = planar(i);
@@ -180,9 +197,24 @@ void walk(const Reader& r, const pugi::xml_node& node, const Matrix& parent, Col
 
 }  // namespace
 
+namespace {
+ColladaMesh fromDocument(const pugi::xml_document& doc, const pugi::xml_parse_result& ok,
+                         const std::string& file);
+}  // namespace
+
 ColladaMesh readColladaPlanar(const std::string& file) {
   pugi::xml_document doc;
-  pugi::xml_parse_result ok = doc.load_file(file.c_str());
+  return fromDocument(doc, doc.load_file(file.c_str()), file);
+}
+
+ColladaMesh parseColladaPlanar(const std::string& text, const std::string& source) {
+  pugi::xml_document doc;
+  return fromDocument(doc, doc.load_buffer(text.data(), text.size()), source);
+}
+
+namespace {
+ColladaMesh fromDocument(const pugi::xml_document& doc, const pugi::xml_parse_result& ok,
+                         const std::string& file) {
   if (!ok)
     throw InputError(file + ": (XML, offset " + std::to_string(ok.offset) +
                      "): " + ok.description());
@@ -197,5 +229,6 @@ ColladaMesh readColladaPlanar(const std::string& file) {
   for (pugi::xml_node n : visual.children("node")) walk(r, n, identity(), out, 0, file);
   return out;
 }
+}  // namespace
 
 }  // namespace mms

@@ -21,5 +21,7 @@ struct ColladaMesh {
 
 /// Throws InputError naming the file and the element on malformed XML or references.
 ColladaMesh readColladaPlanar(const std::string& file);
+/// The same from a document in memory; `source` names it in messages.
+ColladaMesh parseColladaPlanar(const std::string& text, const std::string& source);
 
 }  // namespace mms

@@ -1,7 +1,5 @@
 #include "io/OmplApp.h"
 
-#include <boost/property_tree/ini_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -11,55 +9,13 @@
 
 #include "geometry/Exact.h"
 #include "io/Collada.h"
+#include "io/OmplAppCfg.h"
 #include "io/SceneIO.h"
 #include "mms/Errors.h"
 
 namespace mms {
 
 namespace {
-
-// The [problem] section only: OMPL.app's [planner] sections repeat keys (aps=, cforest=),
-// which an INI reader rightly refuses.
-std::map<std::string, std::string> problemSection(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file + ": (file): cannot open");
-  std::ostringstream section;
-  std::string line;
-  bool inside = false, found = false;
-  while (std::getline(in, line)) {
-    std::string t = line;
-    t.erase(0, t.find_first_not_of(" \t\r"));
-    if (!t.empty() && t[0] == '[') {
-      inside = t.rfind("[problem]", 0) == 0;
-      found = found || inside;
-    }
-    if (inside) section << line << "\n";
-  }
-  if (!found) throw InputError(file + ": [problem]: no such section");
-  boost::property_tree::ptree pt;
-  std::istringstream text(section.str());
-  try {
-    boost::property_tree::ini_parser::read_ini(text, pt);
-  } catch (const boost::property_tree::ini_parser_error& e) {
-    throw InputError(file + ": [problem] line " + std::to_string(e.line()) + ": " + e.message());
-  }
-  std::map<std::string, std::string> kv;
-  for (const auto& [key, value] : pt.get_child("problem")) kv[key] = value.data();
-  return kv;
-}
-
-double number(const std::map<std::string, std::string>& kv, const std::string& key,
-              const std::string& file) {
-  auto it = kv.find(key);
-  if (it == kv.end()) throw InputError(file + ": [problem] " + key + ": missing");
-  std::istringstream in(it->second);
-  in.imbue(std::locale::classic());
-  double v;
-  std::string rest;
-  if (!(in >> v) || (in >> rest) || !std::isfinite(v))
-    throw InputError(file + ": [problem] " + key + ": not a number: '" + it->second + "'");
-  return v;
-}
 
 struct MeshShape {
   std::vector<exact::PolygonWithHoles> polygons;
@@ -101,21 +57,18 @@ MeshShape meshPolygons(const std::string& mesh, const std::string& what, ImportN
 }  // namespace
 
 Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes) {
-  const auto kv = problemSection(cfgFile);
+  const OmplAppProblem problem = readOmplAppProblem(cfgFile);
   const std::filesystem::path dir = std::filesystem::path(cfgFile).parent_path();
   auto meshPath = [&](const std::string& key) {
-    auto it = kv.find(key);
-    if (it == kv.end() || it->second.empty())
-      throw InputError(cfgFile + ": [problem] " + key + ": missing");
-    return (dir / it->second).string();
+    return (dir / (key == "robot" ? problem.robotMesh : problem.worldMesh)).string();
   };
-  if (auto c = kv.find("control"); c != kv.end())
-    notes.warnings.push_back(cfgFile + ": control = " + c->second +
+  if (problem.control)
+    notes.warnings.push_back(cfgFile + ": control = " + *problem.control +
                              " ignored: planned as a geometric (holonomic) problem");
 
   Scene scene;
-  auto name = kv.find("name");
-  scene.name = name != kv.end() ? name->second : std::filesystem::path(cfgFile).stem().string();
+  scene.name =
+      !problem.name.empty() ? problem.name : std::filesystem::path(cfgFile).stem().string();
 
   const MeshShape robotMesh = meshPolygons(meshPath("robot"), "[problem] robot", notes);
   const auto& robotPolys = robotMesh.polygons;
@@ -137,10 +90,8 @@ Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes) {
   }
   // OMPL.app's reference point: the mean of the mesh's vertices.
   for (Vec2& v : robot.shape) v = {v.x - robotMesh.centre.x, v.y - robotMesh.centre.y};
-  robot.start = {number(kv, "start.x", cfgFile), number(kv, "start.y", cfgFile),
-                 number(kv, "start.theta", cfgFile)};
-  robot.goal = {number(kv, "goal.x", cfgFile), number(kv, "goal.y", cfgFile),
-                number(kv, "goal.theta", cfgFile)};
+  robot.start = problem.start;
+  robot.goal = problem.goal;
   scene.robots.push_back(robot);
 
   size_t split = 0;
@@ -157,8 +108,7 @@ Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes) {
     notes.warnings.push_back(std::to_string(split) +
                              " obstacle(s) with holes split into convex pieces (scenes hold "
                              "simple polygons)");
-  scene.bounds = {number(kv, "volume.min.x", cfgFile), number(kv, "volume.min.y", cfgFile),
-                  number(kv, "volume.max.x", cfgFile), number(kv, "volume.max.y", cfgFile)};
+  scene.bounds = problem.volume;
   // Validate as a loaded file would be (one definition of a valid scene).
   return parseScene(sceneToJson(scene), cfgFile);
 }

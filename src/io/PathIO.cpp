@@ -95,7 +95,8 @@ std::vector<Config> parseOmplPath(const std::string& text, const std::string& so
     }
     w.push_back(std::move(q));
   }
-  if (w.empty()) throw InputError(source + ": (file): no waypoints (an OMPL.app path has one line per state)");
+  if (w.empty())
+    throw InputError(source + ": (file): no waypoints (an OMPL.app path has one line per state)");
   return w;
 }
 

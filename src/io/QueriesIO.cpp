@@ -6,8 +6,12 @@
 namespace mms {
 
 std::vector<Query> loadQueries(const std::string& file, const Scene& scene) {
+  return parseQueries(json_in::parseFile(file), file, scene);
+}
+
+std::vector<Query> parseQueries(const nlohmann::json& doc, const std::string& file,
+                                const Scene& scene) {
   using json_in::Node;
-  const auto doc = json_in::parseFile(file);
   const Node root(doc, file, "");
   root.allowOnly({"format", "queries"});
   if (root["format"].string() != kQueriesFormat)
