@@ -492,6 +492,11 @@ TEST(Import, FuzzedReadersFailWithOneLine) {
     <instance_geometry url="#g"/></node></visual_scene></library_visual_scenes></COLLADA>)";
   EXPECT_NE(error([&] { parseColladaPlanar(loop, "f.dae"); }).find("refer to each other in a loop"),
             std::string::npos);
+  // A vertex index too large for an integer.
+  std::string huge = kSquareDae;
+  huge.replace(huge.find("<p>0 1 2"), 8, "<p>1e92 1 2");
+  EXPECT_NE(error([&] { parseColladaPlanar(huge, "f.dae"); }).find("vertex index"),
+            std::string::npos);
   // Elements nested 200 000 deep.
   std::string deep = "<COLLADA>";
   for (int i = 0; i < 200000; ++i) deep += "<a>";

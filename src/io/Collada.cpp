@@ -143,11 +143,11 @@ class Reader {
                         out.vertexMean.y + (v.y - out.vertexMean.y) / n};
     }
     auto project = [&](double idx) {
-      size_t i = size_t(idx);
-      if (idx < 0 || double(i) != idx || i >= count)
+      // Range first: converting 1e92 to an integer is undefined (the fuzzer wrote one).
+      if (!(idx >= 0 && idx < double(count)) || idx != std::floor(idx))
         throw InputError(file_ + ": <triangles><p>: vertex index " + std::to_string(idx) +
                          " out of range");
-      return planar(i);
+      return planar(size_t(idx));
     };
     const size_t per = 3 * stride;
     if (p.size() % per != 0)
