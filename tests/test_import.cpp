@@ -107,6 +107,24 @@ TEST(Import, BadOmplAppInputIsOneLineNamingFileAndField) {
   }
 }
 
+// OMPL.app's objective has no place in a scene: the import says what becomes of it.
+TEST(Import, OmplAppObjectiveIsNotDroppedSilently) {
+  TempDir dir;
+  dir.file("square.dae", kSquareDae);
+  std::string cfg = cfgText("square.dae", "square.dae");
+  cfg.insert(cfg.find("start.x"), "objective = length\nobjective.threshold = 0.0\n");
+  auto r = runMms("import " + quote(dir.file("p.cfg", cfg)) + " -o " + quote(dir.path("o.json")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("objective = length is what mms plan optimises by default"),
+            std::string::npos)
+      << r.err;
+  cfg.replace(cfg.find("= length"), 8, "= maximize_min_clearance");
+  r = runMms("import " + quote(dir.file("q.cfg", cfg)) + " -o " + quote(dir.path("o.json")));
+  EXPECT_NE(r.err.find("objective = maximize_min_clearance is not one mms optimises"),
+            std::string::npos)
+      << r.err;
+}
+
 // The real problems: present in the project's workspace, absent from a user's clone.
 std::vector<std::string> omplAppProblems() {
   std::vector<std::string> cfgs;

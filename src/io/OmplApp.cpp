@@ -62,6 +62,14 @@ Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes) {
   auto meshPath = [&](const std::string& key) {
     return (dir / (key == "robot" ? problem.robotMesh : problem.worldMesh)).string();
   };
+  // A scene holds no objective: say what planning does instead of dropping it silently.
+  if (problem.objective)
+    notes.warnings.push_back(
+        cfgFile + ": objective = " + *problem.objective +
+        (*problem.objective == "length"
+             ? " is what mms plan optimises by default (--optimize 1 --objective length); "
+               "OMPL's thresholds are not used"
+             : " is not one mms optimises (it has --objective length|clearance); ignored"));
   if (problem.control)
     notes.warnings.push_back(cfgFile + ": control = " + *problem.control +
                              " ignored: planned as a geometric (holonomic) problem");

@@ -75,6 +75,7 @@ OmplAppProblem parseOmplAppProblem(const std::string& cfg, const std::string& so
   OmplAppProblem p;
   if (auto n = kv.find("name"); n != kv.end()) p.name = n->second;
   if (auto c = kv.find("control"); c != kv.end()) p.control = c->second;
+  if (auto o = kv.find("objective"); o != kv.end()) p.objective = o->second;
   p.robotMesh = text(kv, "robot", source);
   p.worldMesh = text(kv, "world", source);
   p.start = {number(kv, "start.x", source), number(kv, "start.y", source),

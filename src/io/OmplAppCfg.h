@@ -15,7 +15,8 @@ struct OmplAppProblem {
   std::string robotMesh, worldMesh;  // as written, relative to the .cfg's folder
   Pose start, goal;
   Box volume;
-  std::optional<std::string> control;  // a control-based problem's system, planned geometrically
+  std::optional<std::string> control;    // a control-based problem's system, planned geometrically
+  std::optional<std::string> objective;  // OMPL's optimization objective ("length", ...)
 };
 
 /// Throws InputError ("SOURCE: [problem] KEY: PROBLEM") on a missing section, key or number.
