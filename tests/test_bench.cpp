@@ -55,11 +55,14 @@ TEST(BenchReport, TrimmedMeanMedianAndFailures) {
 
 TEST(BenchReport, OneRunHasNoDeviationAndUncertifiedRunsNoPathMeasures) {
   std::vector<RunRecord> runs{run("a", 1, "found", 0.00803), run("b", 1, "found", 1),
-                              run("b", 2, "found", 3), run("c", 1, "uncertified", 2)};
+                              run("b", 2, "found", 3),       run("c", 1, "uncertified", 2),
+                              run("d", 1, "found", 1),       run("d", 2, "found", 2),
+                              run("d", 3, "found", 5)};
   runs[0].rotation = 1.5;
   const std::string md = markdownReport(summarize(runs), "");
   EXPECT_NE(md.find("| 0.00803 (one run) | 0.00803 | 10 | 1.5 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| 2 ± 1.4 (two runs) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 2 (the middle of three) |"), std::string::npos) << md;
   EXPECT_EQ(md.find("± 0 "), std::string::npos) << md;
   const std::string csv = csvReport(runs);
   // No tightness (the scene has none), no translation or rotation for the uncertified run.

@@ -448,6 +448,11 @@ TEST(Import, OmplPathFilesAreReadUnwrappedAndCheckedLineByLine) {
       0);
   const auto c = runMms("check " + scene + " " + quote(text));
   EXPECT_EQ(c.code, 0) << c.out << c.err;
+  // A path mms wrote (JSON) under the name FILE.path reads as JSON.
+  const std::string named = dir.path("mine.path");
+  ASSERT_EQ(runMms("plan " + scene + " -q -o " + quote(named)).code, 0);
+  const auto mine = runMms("check " + scene + " " + quote(named));
+  EXPECT_EQ(mine.code, 0) << mine.out << mine.err;
   const auto bad = runMms("check " + scene + " " + quote(dir.file("bad.path", "0 0 0\n1 1\n")));
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("bad.path: line 2: expected 3 numbers"), std::string::npos) << bad.err;

@@ -184,9 +184,12 @@ std::string markdownReport(const std::vector<Summary>& summaries, const std::str
     if (s.uncertified) md << " (" << s.uncertified << " uncertified)";
     if (s.notRun) md << " (" << s.notRun << " not run: median decided)";
     md << " | ";
-    // Fewer than three solved runs are not trimmed, and one run has no deviation.
+    // Fewer than three solved runs are not trimmed, and one run has no deviation; of three,
+    // trimming leaves the middle one.
     if (s.solved == 1)
       md << fmt("%.3g", s.meanTrimmed) << " (one run)";
+    else if (s.solved == 3)
+      md << fmt("%.3g", s.meanTrimmed) << " (the middle of three)";
     else if (s.solved == 2)
       md << fmt("%.3g", s.meanTrimmed) << " ± " << fmt("%.2g", s.stdevTrimmed) << " (two runs)";
     else if (s.solved)

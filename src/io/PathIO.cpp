@@ -1,5 +1,6 @@
 #include "io/PathIO.h"
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -100,9 +101,20 @@ std::vector<Config> parseOmplPath(const std::string& text, const std::string& so
   return w;
 }
 
+namespace {
+bool startsAsJson(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  char c = 0;
+  while (in.get(c))
+    if (!std::isspace(static_cast<unsigned char>(c))) return c == '{';
+  return false;
+}
+}  // namespace
+
 Path loadPath(const std::string& file, const Scene& scene) {
-  // OMPL.app's .path files are numbers, one line per state; ours are JSON.
-  if (std::filesystem::path(file).extension() == ".path") {
+  // OMPL.app's .path files are numbers, one line per state; ours are JSON (also when a user
+  // names one FILE.path: `mms plan -o x.path` writes JSON).
+  if (std::filesystem::path(file).extension() == ".path" && !startsAsJson(file)) {
     std::error_code ec;
     if (std::filesystem::is_directory(file, ec))
       throw InputError(file + ": (file): is a folder, not a file");
