@@ -17,6 +17,7 @@
 #include "scenarios/Generators.h"
 #include "scenarios/RandomScene.h"
 #include "util/AtomicFile.h"
+#include "util/Number.h"
 
 namespace mms::cli {
 
@@ -173,16 +174,10 @@ int importScene(const ImportArgs& a) {
     std::istringstream in(a.bounds);
     in.imbue(std::locale::classic());
     for (std::string part; std::getline(in, part, ',');) {
-      size_t used = 0;
-      double x = 0;
-      try {
-        x = std::stod(part, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used == 0 || used != part.size() || !std::isfinite(x))
+      const std::optional<double> x = wholeNumber(part);
+      if (!x || !std::isfinite(*x))
         throw InputError("--bounds: '" + part + "' is not a number (expected XMIN,YMIN,XMAX,YMAX)");
-      v.push_back(x);
+      v.push_back(*x);
     }
     if (v.size() != 4 || v[0] >= v[2] || v[1] >= v[3])
       throw InputError("--bounds: '" + a.bounds +

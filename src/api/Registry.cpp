@@ -4,6 +4,7 @@
 
 #include "api/Adapters.h"
 #include "mms/Errors.h"
+#include "util/Number.h"
 
 namespace mms {
 
@@ -30,14 +31,9 @@ std::string ParamSpec::parse(const std::string& text, double& v) const {
     }
   std::string names;
   for (const std::string& c : choices) names += (names.empty() ? "" : ", ") + c;
-  size_t used = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size())
-    return "'" + text + "' is not " + (choices.empty() ? "a number" : "one of " + names);
+  const std::optional<double> number = wholeNumber(text);
+  if (number) v = *number;
+  if (!number) return "'" + text + "' is not " + (choices.empty() ? "a number" : "one of " + names);
   return problem(v);
 }
 

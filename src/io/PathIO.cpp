@@ -9,6 +9,7 @@
 #include "io/Json.h"
 #include "mms/Errors.h"
 #include "util/AtomicFile.h"
+#include "util/Number.h"
 
 namespace mms {
 
@@ -67,16 +68,9 @@ std::vector<Config> parseOmplPath(const std::string& text, const std::string& so
     std::vector<double> v;
     std::string token;
     while (in >> token) {
-      size_t used = 0;
-      double x = 0;
-      try {
-        x = std::stod(token, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != token.size() || !std::isfinite(x))
-        throw InputError(where + "'" + token + "' is not a number");
-      v.push_back(x);
+      const std::optional<double> x = wholeNumber(token);
+      if (!x || !std::isfinite(*x)) throw InputError(where + "'" + token + "' is not a number");
+      v.push_back(*x);
     }
     if (v.empty()) continue;
     if (v.size() != full && v.size() != compact)
