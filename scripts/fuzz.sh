@@ -19,7 +19,7 @@ esac
 bash scripts/setup.sh
 # -O1 keeps assertions (no NDEBUG) while staying fast enough for millions of runs.
 cmake -S . -B build-fuzz -DMMS_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=None \
-  -DCMAKE_CXX_FLAGS="-O1" -DMMS_BUILD_TESTS=OFF -DMMS_BUILD_BENCH=OFF >/dev/null
+  -DCMAKE_CXX_FLAGS="-O1" -DMMS_BUILD_TESTS=OFF -DMMS_BUILD_BENCH=OFF -DMMS_BUILD_PYTHON=OFF >/dev/null
 targets="FuzzScene:scene FuzzPath:path FuzzDiscopygal:discopygal FuzzOmplCfg:cfg FuzzCollada:collada FuzzQueries:queries"
 cmake --build build-fuzz -j"$(nproc)" --target FuzzScene FuzzPath FuzzDiscopygal FuzzOmplCfg FuzzCollada FuzzQueries
 

@@ -14,6 +14,7 @@ packages=(
   libpugixml-dev libpng-dev
   chromium
   ompl-demos
+  pybind11-dev python3-dev python3-pytest
 )
 
 missing=()

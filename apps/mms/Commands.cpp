@@ -14,8 +14,6 @@
 #include "mms/Errors.h"
 #include "render/HtmlViewer.h"
 #include "render/SvgRenderer.h"
-#include "scenarios/Generators.h"
-#include "scenarios/RandomScene.h"
 #include "util/AtomicFile.h"
 #include "util/Number.h"
 
@@ -34,16 +32,6 @@ std::string pose(const Pose& p) {
 Scene readScene(const std::string& file, bool quiet) {
   ImportNotes notes;
   Scene s = loadAnyScene(file, notes);
-  // Degrees given for radians pass every check but plan something else: say so.
-  for (size_t i = 0; i < s.robots.size(); ++i)
-    for (const auto& [end, pose] :
-         {std::pair{"start", s.robots[i].start}, {"goal", s.robots[i].goal}})
-      if (std::fabs(pose.theta) > 2 * M_PI) {
-        std::ostringstream w;
-        w << file << ": robots[" << i << "]." << end << ": angle " << pose.theta
-          << " is more than a full turn; angles are in radians";
-        notes.warnings.push_back(w.str());
-      }
   if (!quiet)
     for (const std::string& w : notes.warnings) std::fprintf(stderr, "mms: note: %s\n", w.c_str());
   return s;
@@ -116,50 +104,7 @@ int view(const ViewArgs& a) {
 }
 
 int scenario(const ScenarioArgs& a) {
-  if ((a.name == "assembly-1" || a.name == "assembly-2") && a.slack > 0.15) {
-    char value[32];
-    std::snprintf(value, sizeof value, "%g", a.slack);
-    throw InputError(std::string("--slack: ") + value + " is more than " + a.name +
-                     "'s largest play, 0.15");
-  }
-  if (a.name == "random" && a.robots > 2)
-    throw InputError("--robots: " + std::to_string(a.robots) +
-                     " robots; the random test scene has 1 or 2 (discs-room takes more)");
-  Scene s;
-  if (a.name == "pacman")
-    s = pacmanScene(a.tightness);
-  else if (a.name == "viking-helmet")
-    s = vikingHelmetScene();
-  else if (a.name == "assembly-1")
-    s = assemblyOneScene(a.slack);
-  else if (a.name == "assembly-2")
-    s = assemblyTwoScene(a.slack, a.mPartsOnly);
-  else if (a.name == "random")
-    s = randomScene({a.seed, a.robots, a.obstacles});
-  else if (a.name == "carry-turn")
-    s = carryTurnScene(a.seed);
-  else if (a.name == "niche-swap")
-    s = nicheSwapScene(a.seed, a.slackGiven ? a.slack : -1);
-  else if (a.name == "niche-three")
-    s = nicheThreeScene(a.seed);
-  else if (a.name == "discs-swap")
-    s = discsSwapScene(a.seed);
-  else if (a.name == "discs-room")
-    s = discsRoomScene(a.seed, a.robots > 0 ? size_t(a.robots) : 10);
-  else if (a.name == "open-clutter")
-    s = openClutterScene(a.seed);
-  else if (a.name == "bend")
-    s = bendScene(a.seed);
-  else if (a.name == "doors")
-    s = doorsScene(a.seed);
-  else
-    s = randomPolygonsTwoRobots(a.seed);
-  // The generators must produce valid scenes: validate before writing.
-  try {
-    parseScene(sceneToJson(s), a.name);
-  } catch (const InputError& e) {
-    throw std::logic_error(std::string("generated scene is invalid: ") + e.what());
-  }
+  const Scene s = makeScenario(a, "--");
   saveScene(s, a.output);
   std::printf("%s: written (%s)\n", a.output.c_str(), s.name.c_str());
   return 0;

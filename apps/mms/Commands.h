@@ -7,6 +7,7 @@
 #include "bench/Runner.h"
 #include "mms/Planner.h"
 #include "mms/Scene.h"
+#include "scenarios/Catalog.h"
 
 namespace mms::cli {
 
@@ -69,14 +70,8 @@ const Stopwatch& processClock();
 
 namespace mms::cli {
 
-struct ScenarioArgs {
-  std::string name, output;
-  double tightness = 0;
-  uint64_t seed = 1;
-  double slack = 0.05;
-  bool slackGiven = false;  // niche-swap draws its play from the seed unless given
-  bool mPartsOnly = false;
-  int robots = 0, obstacles = -1;  // random: 0 / -1 = drawn from the seed
+struct ScenarioArgs : ScenarioRequest {
+  std::string output;
 };
 int scenario(const ScenarioArgs& a);
 

@@ -194,9 +194,7 @@ int main(int argc, char** argv) {
           "carry-turn, niche-swap, niche-three, discs-swap, discs-room, open-clutter, bend or "
           "doors")
       ->required()
-      ->check(CLI::IsMember({"pacman", "viking-helmet", "random-polygons", "assembly-1",
-                             "assembly-2", "random", "carry-turn", "niche-swap", "niche-three",
-                             "discs-swap", "discs-room", "open-clutter", "bend", "doors"}));
+      ->check(CLI::IsMember(mms::scenarioNames()));
   outputOption(scenarioCmd, sa.output, "Scene file to write");
   scenarioCmd
       ->add_option("--tightness", sa.tightness,

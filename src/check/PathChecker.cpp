@@ -173,7 +173,14 @@ PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker,
     const double angTol = checker.tolerance() / std::max(1.0, checker.radius(i));
     const std::string who = "robot '" + scene.robots[i].name + "'";
     auto text = [](const Pose& p) {
-      return "(" + num(p.x) + ", " + num(p.y) + ", " + num(p.theta) + ")";
+      // Appended piece by piece: GCC 12 warns (-Wrestrict) on "(" + std::string&&.
+      std::string t("(");
+      t += num(p.x);
+      t += ", ";
+      t += num(p.y);
+      t += ", ";
+      t += num(p.theta);
+      return t += ")";
     };
     if (!samePose(poseOf(w.front(), i), poseOf(start, i), posTol, angTol))
       return fail(0, 0,

@@ -8,8 +8,13 @@
 
 namespace mms {
 
+/// Degrees given for radians pass every check but plan something else: a note for each start or
+/// goal angle beyond a full turn.
+void noteAngles(const Scene& scene, const std::string& source, ImportNotes& notes);
+
 /// By extension (.cfg: OMPL.app) and, for .json, by content (discopygal's "__class__" entries
-/// and no "format"); anything else is read as mms-scene/1.
+/// and no "format"); anything else is read as mms-scene/1. Notes say what a conversion
+/// changed and which angles look like degrees.
 Scene loadAnyScene(const std::string& file, ImportNotes& notes);
 
 }  // namespace mms

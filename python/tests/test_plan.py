@@ -1,0 +1,114 @@
+"""Planning from Python: every planner by name, parameters as keyword arguments checked against
+the planner's declared list, certified paths that the command line certifies again."""
+
+import pytest
+
+import mms
+from conftest import box_scene, cli, source
+
+
+def test_planners_are_the_registry():
+    names = [p["name"] for p in mms.planners()]
+    assert names[:2] == ["auto", "mms"]
+    assert {"rrtconnect", "prm", "kpiece"} <= set(names)
+    run = cli("plan", "--help")
+    for name in names:
+        assert name in run.stdout
+    params = {p["name"]: p for p in next(p for p in mms.planners() if p["name"] == "mms")["params"]}
+    assert params["n_theta"]["option"] == "--n-theta"
+    assert params["objective"]["choices"] == ["length", "clearance"]
+    assert params["objective"]["default"] == "length"
+
+
+def test_one_robot_path_is_certified_and_saved(bar_slot, tmp_path):
+    r = mms.plan(bar_slot, "mms", seed=3, time_limit=30)
+    assert r.found and r.status == "found"
+    assert r.planner == "mms" and r.seed == 3 and r.solved_by == "mms"
+    assert r.path[0] == bar_slot.start and r.path[-1] == pytest.approx(bar_slot.goal)
+    assert r.certificate and r.certificate.translation > 0
+    assert mms.check(bar_slot, r)
+    assert r.stats["seconds"] == r.seconds > 0
+    assert any(name == "optimize" for name in r.stats["phases"])
+    assert r.parameters["n_theta"] == 16 and r.parameters["optimize"] == 1
+    file = tmp_path / "bar.path.json"
+    r.save(file)
+    assert cli("check", source("scenarios", "one-robot", "bar-slot.json"), file).returncode == 0
+    again = mms.load_path(bar_slot, file)
+    assert len(again) == len(r.path)
+    assert all(a == pytest.approx(b, abs=1e-9) for a, b in zip(again, r.path))
+    assert mms.check(bar_slot, str(file))
+    assert len(r.robot_path(0)) == len(r.path) == len(r.robot_path(bar_slot.robot_names[0]))
+
+
+def test_same_seed_same_path(bar_slot):
+    a = mms.plan(bar_slot, "mms", seed=5, time_limit=30)
+    b = mms.plan(bar_slot, "mms", seed=5, time_limit=30)
+    assert a.found and a.path == b.path
+
+
+def test_two_robots_and_a_sampler(tmp_path):
+    two = mms.scenario("random-polygons", seed=13)
+    r = mms.plan(two, seed=1, time_limit=60)
+    assert r.found and len(r.path[0]) == 6
+    assert r.solved_by in {p["name"] for p in mms.planners()}
+    file = tmp_path / "two.path.json"
+    r.save(file)
+    scene_file = tmp_path / "two.json"
+    two.save(scene_file)
+    assert cli("check", scene_file, file).returncode == 0
+    s = mms.plan(mms.Scene(box_scene(wall=False)), "rrtconnect", time_limit=10, simplify=1)
+    assert s.found and mms.check(s.scene, s.path)
+
+
+def test_parameters_as_keywords(bar_slot):
+    r = mms.plan(bar_slot, "mms", time_limit=30, n_theta=8, objective="clearance", optimize=True)
+    assert r.found
+    assert r.parameters["n_theta"] == 8 and r.parameters["objective"] == 1
+    with pytest.raises(mms.InputError, match="not a parameter of planner 'mms'.*n_theta"):
+        mms.plan(bar_slot, "mms", bogus=1)
+    with pytest.raises(mms.InputError, match=r"^mms.plan: n_theta: 0 is not in \[1, "):
+        mms.plan(bar_slot, "mms", n_theta=0)
+    with pytest.raises(mms.InputError, match="objective: 'shortest' is not one of length, clearance"):
+        mms.plan(bar_slot, "mms", objective="shortest")
+    with pytest.raises(mms.InputError, match=r"n_theta: \[8\] is not a number"):
+        mms.plan(bar_slot, "mms", n_theta=[8])
+    with pytest.raises(mms.InputError, match="unknown"):
+        mms.plan(bar_slot, "astar")
+    with pytest.raises(mms.InputError, match="time_limit"):
+        mms.plan(bar_slot, time_limit=0)
+    with pytest.raises(mms.InputError, match="seed"):
+        mms.plan(bar_slot, seed=-1)
+    with pytest.raises(mms.InputError, match="mms.Scene"):
+        mms.plan("bar-slot.json")
+
+
+def test_check_says_why(bar_slot):
+    straight = [bar_slot.start, bar_slot.goal]
+    c = mms.check(bar_slot, straight)
+    assert not c and c.reason and 0 <= c.parameter <= 1
+    assert "rejected" in repr(c)
+    with pytest.raises(mms.InputError, match=r"path\[1\]: 2 numbers"):
+        mms.check(bar_slot, [bar_slot.start, [0, 0]])
+    with pytest.raises(mms.InputError, match="not a number"):
+        mms.check(bar_slot, [bar_slot.start, ["a", 0, 0]])
+    with pytest.raises(mms.InputError, match="no waypoints"):
+        mms.check(bar_slot, [])
+
+
+def test_unsolvable_scene_ends_at_the_limit():
+    r = mms.plan(mms.Scene(box_scene(wall=True)), "mms", time_limit=0.5)
+    assert not r.found and r.status == "not_found"
+    assert r.path == []
+    with pytest.raises(mms.InputError, match="no path to save"):
+        r.save("never-written.json")
+
+
+def test_pictures(bar_slot):
+    r = mms.plan(bar_slot, "mms", time_limit=30)
+    svg = mms.render_svg(bar_slot, r)
+    assert svg.startswith("<svg") or "<svg" in svg[:200]
+    assert "<animate" in svg
+    assert "<svg" in r._repr_svg_() and "<svg" in bar_slot._repr_svg_()
+    assert "<animate" not in mms.render_svg(bar_slot)
+    with pytest.raises(mms.InputError, match="width"):
+        mms.render_svg(bar_slot, width=0)

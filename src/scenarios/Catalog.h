@@ -1,0 +1,29 @@
+#pragma once
+// Every scene generator by name, with its settings checked: what `mms scenario` writes and what
+// the Python module's mms.scenario() returns.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mms/Scene.h"
+
+namespace mms {
+
+struct ScenarioRequest {
+  std::string name;
+  double tightness = 0;  // pacman: 0 = the base scene, towards 1 = the square exactly fits
+  uint64_t seed = 1;     // random-polygons, random and the generated families
+  double slack = 0.05;   // assembly-1/2; niche-swap when slackGiven
+  bool slackGiven = false;
+  bool mPartsOnly = false;         // assembly-2
+  int robots = 0, obstacles = -1;  // random: 0 / -1 = drawn from the seed; discs-room: robots
+};
+
+/// pacman, viking-helmet, random-polygons, assembly-1, ... in the order of the docs.
+const std::vector<std::string>& scenarioNames();
+
+/// The scene; throws InputError ("PREFIX" "SETTING: PROBLEM", e.g. "--slack: ...") on an unknown
+/// name or a setting out of range for that generator.
+Scene makeScenario(const ScenarioRequest& request, const std::string& settingPrefix = "");
+
+}  // namespace mms
