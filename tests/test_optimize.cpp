@@ -192,3 +192,42 @@ TEST(Optimize, ObjectiveIsAChoiceByName) {
   EXPECT_EQ(v, 0);
   EXPECT_EQ(objective->parse("speed", v), "'speed' is not one of length, clearance");
 }
+
+// Two gaps in the wall: a narrow one near the line from start to goal, a wide one far from it,
+// which a sampler takes more often. The optimiser keeps a path's way through the wall; restarts
+// find the short way when a first path took the long one, and never return a longer path than
+// without them.
+TEST(Optimize, RestartsKeepTheShortestWayThroughTheWall) {
+  Scene s = room(1);
+  s.obstacles = {{{9, 0}, {11, 0}, {11, 2.5}, {9, 2.5}},
+                 {{9, 3.5}, {11, 3.5}, {11, 7}, {9, 7}},
+                 {{9, 9}, {11, 9}, {11, 10}, {9, 10}}};
+  s.robots[0].start = {2, 4, 0};
+  s.robots[0].goal = {18, 4, 0};
+  const CollisionChecker checker(s);
+  size_t compared = 0, shorterWay = 0;
+  for (uint64_t seed = 1; seed <= 8; ++seed) {
+    PlannerParams once, restarted;
+    once.seed = restarted.seed = seed;
+    once.values["optimize"] = restarted.values["optimize"] = 1;
+    restarted.values["restarts"] = 6;
+    const PlanResult a = makePlanner("rrtconnect", s, once)->solve(Termination(30));
+    const PlanResult b = makePlanner("rrtconnect", s, restarted)->solve(Termination(30));
+    const PlanResult c = makePlanner("rrtconnect", s, restarted)->solve(Termination(30));
+    // OMPL checks motions at a resolution: a path it returns may fail the certifier.
+    if (!a.found() || !b.found()) continue;
+    ++compared;
+    EXPECT_TRUE(certified(s, b.waypoints)) << seed;
+    EXPECT_EQ(b.waypoints, c.waypoints) << seed;  // same seed, same path
+    EXPECT_LE(pathCost(checker, b.waypoints), pathCost(checker, a.waypoints) + 1e-9) << seed;
+    // Through the narrow gap: about 16.1; through the wide one: about 17.5.
+    shorterWay += translationOf(a.waypoints, 0) > 17 && translationOf(b.waypoints, 0) < 16.5;
+    size_t run = 0;
+    for (const auto& [name, n] : b.stats.counts)
+      if (name == "restarts_run") run = n;
+    EXPECT_EQ(run, 6u) << seed;
+    EXPECT_EQ(b.parameters.at("restarts"), 6);
+  }
+  EXPECT_GE(compared, 6u);
+  EXPECT_GT(shorterWay, 0u);
+}

@@ -193,13 +193,16 @@ class Result:
 
 
 def plan(scene: Scene, planner: str = "auto", *, seed: int = 1, time_limit: float = 60.0,
-         **params) -> Result:
+         progress=None, **params) -> Result:
     """Plans a certified path for every robot of `scene` from start to goal.
 
     planner: a name from mms.planners() ("auto": MMS racing RRT-Connect, "mms", "prm",
     "rrtconnect", "kpiece", ...). seed: same seed, same result. time_limit: seconds for the
     whole run. params: the planner's parameters by name, e.g. n_theta=32, optimize=0,
     objective="clearance"; each is checked against the planner's declared range.
+    progress: called with the statistics so far (a dict, as Result.stats) after each of the
+    planner's rounds, at most every 50 ms, on the calling thread; an exception it raises
+    stops the planner and propagates.
 
     The GIL is released while the planner works; Ctrl-C stops it at its next manifold and
     raises KeyboardInterrupt. Raises InputError for a bad argument or a scene the planner
@@ -208,7 +211,7 @@ def plan(scene: Scene, planner: str = "auto", *, seed: int = 1, time_limit: floa
         raise InputError(f"mms.plan: scene: expected an mms.Scene, not {type(scene).__name__}")
     return Result(_mms.plan(scene, _text(planner, "mms.plan: planner"),
                             _whole(seed, "mms.plan: seed"),
-                            _number(time_limit, "mms.plan: time_limit"), params))
+                            _number(time_limit, "mms.plan: time_limit"), params, progress))
 
 
 def check(scene: Scene, path) -> Check:

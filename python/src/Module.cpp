@@ -12,6 +12,7 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "io/AnyScene.h"
@@ -174,18 +175,27 @@ double paramValue(const ParamSpec& spec, const py::handle& v) {
 
 /// Runs solve() on a thread of its own while this one, without the GIL, wakes every 50 ms to
 /// let Python's signal handlers run: Ctrl-C sets the planner's cancel flag, the planner stops
-/// at its next checkpoint, and the KeyboardInterrupt goes on from here.
-PlanResult solveReleasingGil(Planner& planner, double timeLimit) {
+/// at its next checkpoint, and the KeyboardInterrupt goes on from here. `progress` (a Python
+/// callable or None) is called here too, with the latest statistics the planner reported, so
+/// that it runs on the caller's thread with the GIL held.
+PlanResult solveReleasingGil(Planner& planner, double timeLimit, const py::object& progress) {
   std::atomic<bool> cancel{false};
   std::mutex m;
   std::condition_variable cv;
   bool done = false;
+  std::optional<PlanStatistics> report;  // the latest one not yet passed on
   PlanResult result;
   std::exception_ptr error;
   const Termination stop(timeLimit, &cancel);
+  Planner::Progress onProgress;
+  if (!progress.is_none())
+    onProgress = [&](const PlanStatistics& s) {
+      std::lock_guard<std::mutex> lock(m);
+      report = s;
+    };
   std::thread worker([&] {
     try {
-      result = planner.solve(stop);
+      result = planner.solve(stop, onProgress);
     } catch (...) {
       error = std::current_exception();
     }
@@ -193,30 +203,38 @@ PlanResult solveReleasingGil(Planner& planner, double timeLimit) {
     done = true;
     cv.notify_all();
   });
-  bool interrupted = false;
-  for (;;) {
+  // Ends the worker before an exception leaves: it refers to this frame.
+  auto finish = [&] {
+    cancel = true;
+    py::gil_scoped_release nogil;
+    worker.join();
+  };
+  for (bool finished = false; !finished;) {
+    std::optional<PlanStatistics> latest;
     {
       py::gil_scoped_release nogil;
       std::unique_lock<std::mutex> lock(m);
-      if (cv.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; })) break;
+      finished = cv.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; });
+      latest.swap(report);
     }
-    if (PyErr_CheckSignals() != 0) {
-      interrupted = true;
-      cancel = true;
-      break;
+    try {
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      if (latest && !finished) progress(fromJson(toJson(*latest)));
+    } catch (...) {
+      finish();
+      throw;
     }
   }
   {
     py::gil_scoped_release nogil;
     worker.join();
   }
-  if (interrupted) throw py::error_already_set();
   if (error) std::rethrow_exception(error);
   return result;
 }
 
 PyResult plan(const PyScene& s, const std::string& planner, uint64_t seed, double timeLimit,
-              const py::dict& params) {
+              const py::dict& params, const py::object& progress) {
   const PlannerInfo* info = findPlanner(planner);
   if (!info) {
     std::string known;
@@ -238,7 +256,9 @@ PyResult plan(const PyScene& s, const std::string& planner, uint64_t seed, doubl
   r.seed = pp.seed;
   r.timeLimit = timeLimit;
   std::unique_ptr<Planner> p = makePlanner(planner, *s.scene, pp, s.source);
-  r.result = solveReleasingGil(*p, timeLimit);
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw InputError("mms.plan: progress: expected a callable or None");
+  r.result = solveReleasingGil(*p, timeLimit, progress);
   {
     py::gil_scoped_release nogil;
     p.reset();  // a large roadmap takes a while to free

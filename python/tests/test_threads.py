@@ -23,13 +23,15 @@ def test_other_threads_run_while_planning():
             ticks += 1
             time.sleep(0.005)
 
-    counter = threading.Thread(target=count)
+    counter = threading.Thread(target=count, daemon=True)
     counter.start()
     start = time.monotonic()
-    r = mms.plan(walled, "mms", time_limit=1.0)
-    elapsed = time.monotonic() - start
-    done.set()
-    counter.join()
+    try:
+        r = mms.plan(walled, "mms", time_limit=1.0)
+        elapsed = time.monotonic() - start
+    finally:
+        done.set()
+        counter.join()
     assert not r.found and elapsed >= 0.9
     # With the GIL held for the whole second, the counter would not have run at all.
     assert ticks >= 20
@@ -77,3 +79,38 @@ def test_ctrl_c_stops_the_portfolio_and_ompl():
         out, err, code, _ = interrupt(planner)
         assert code == 0, err
         assert out.startswith("interrupted\nafter found"), planner + ": " + out + err
+
+
+def test_progress_reports_on_the_calling_thread():
+    walled = mms.Scene(box_scene(wall=True))
+    seen = []
+    caller = threading.get_ident()
+
+    def progress(stats):
+        assert threading.get_ident() == caller
+        seen.append(stats)
+
+    r = mms.plan(walled, "mms", time_limit=1.5, progress=progress)
+    assert not r.found and seen
+    assert [s["rounds"] for s in seen] == sorted(s["rounds"] for s in seen)
+    assert all("phases" in s for s in seen)
+
+
+def test_an_exception_in_progress_stops_the_planner():
+    walled = mms.Scene(box_scene(wall=True))
+
+    def progress(stats):
+        raise RuntimeError("enough")
+
+    start = time.monotonic()
+    try:
+        mms.plan(walled, "mms", time_limit=60, progress=progress)
+        raise AssertionError("the exception did not propagate")
+    except RuntimeError as e:
+        assert str(e) == "enough"
+    assert time.monotonic() - start < 30
+    try:
+        mms.plan(walled, "mms", progress=42)
+        raise AssertionError("a progress that is no callable was taken")
+    except mms.InputError as e:
+        assert "progress" in str(e)

@@ -3,6 +3,13 @@
 // left of the time limit. The planner's time (PlanStatistics::seconds) stays the time to its
 // first certified path, as OMPL's benchmarks report time apart from simplification; the
 // optimisation is the phase "optimize".
+//
+// The optimiser is local: it keeps the path's homotopy class. With --restarts N the planner then
+// runs N more times from seeds drawn from the run's seed (a fresh planner each, so a different
+// roadmap and often a different way round the obstacles), each path is optimised too, and the
+// best is kept (phase "restarts"): anytime improvement that stays the same for the same seed, as
+// long as the time limit does not cut it.
+#include <functional>
 #include <memory>
 
 #include "api/Adapters.h"
@@ -15,11 +22,14 @@ namespace {
 
 using Type = ParamSpec::Type;
 
+using Factory = std::function<std::unique_ptr<Planner>(const Scene& scene, uint64_t seed)>;
+
 class Optimizing final : public Planner {
  public:
-  Optimizing(std::unique_ptr<Planner> inner, const Scene& scene, uint64_t seed,
-             OptimizeSettings settings, std::map<std::string, double> parameters)
-      : inner_(std::move(inner)),
+  Optimizing(Factory make, const Scene& scene, uint64_t seed, OptimizeSettings settings,
+             std::map<std::string, double> parameters)
+      : make_(std::move(make)),
+        inner_(make_(scene, seed)),
         scene_(scene),
         seed_(seed),
         settings_(settings),
@@ -30,20 +40,35 @@ class Optimizing final : public Planner {
     for (const auto& [k, v] : parameters_) r.parameters[k] = v;
     if (!r.found() || parameters_.at("optimize") == 0) return r;
     const CollisionChecker checker(scene_);
-    Random rng(seed_ ^ 0x6f7074696d697a65ull);  // its own stream: the planner's is not touched
-    std::vector<Config> w = r.waypoints;
-    const OptimizeStats s = optimizePath(scene_, checker, rng, settings_, stop, w);
-    Stopwatch certify;
-    PathCheckResult c = checkPath(scene_, checker, w);
-    // The steps certified every change; a refusal here would be a bug, and the planner's own
-    // certified path is kept.
-    if (c.ok) {
-      r.waypoints = std::move(w);
-      r.certificate = c;
+    OptimizeStats total;
+    improve(r, checker, seed_, stop, total);
+    const size_t restarts = size_t(parameters_.at("restarts"));
+    if (restarts > 0) {
+      Stopwatch watch;
+      size_t run = 0, improved = 0;
+      Random seeds(seed_ ^ 0x7265737461727473ull);
+      for (; run < restarts && !stop(); ++run) {
+        const uint64_t seed = seeds.bits();
+        PlanResult other = make_(scene_, seed)->solve(stop);
+        if (!other.found()) continue;
+        OptimizeStats s;
+        improve(other, checker, seed, stop, s);
+        if (better(other, r, checker)) {
+          r.waypoints = std::move(other.waypoints);
+          r.certificate = other.certificate;
+          r.stats.solvedBy = other.stats.solvedBy;  // the portfolio member whose path it is
+          ++improved;
+        }
+      }
+      r.stats.phases.emplace_back("optimize", total.seconds);
+      r.stats.phases.emplace_back("restarts", watch.seconds());
+      r.stats.counts.emplace_back("restarts_run", run);
+      r.stats.counts.emplace_back("restarts_improved", improved);
+    } else {
+      r.stats.phases.emplace_back("optimize", total.seconds);
     }
-    r.stats.phases.emplace_back("optimize", s.seconds + certify.seconds());
-    r.stats.counts.emplace_back("optimize_changes", s.accepted);
-    r.stats.counts.emplace_back("optimize_evaluations", s.evaluations);
+    r.stats.counts.emplace_back("optimize_changes", total.accepted);
+    r.stats.counts.emplace_back("optimize_evaluations", total.evaluations);
     return r;
   }
 
@@ -57,6 +82,40 @@ class Optimizing final : public Planner {
   }
 
  private:
+  /// Optimises a found path in place (certified again at the end), adding to `stats`.
+  void improve(PlanResult& r, const CollisionChecker& checker, uint64_t seed,
+               const Termination& stop, OptimizeStats& stats) const {
+    Stopwatch watch;
+    Random rng(seed ^ 0x6f7074696d697a65ull);  // its own stream: the planner's is not touched
+    std::vector<Config> w = r.waypoints;
+    const OptimizeStats s = optimizePath(scene_, checker, rng, settings_, stop, w);
+    if (s.accepted > 0) {
+      // Every change was certified; this is a last guard, and a path along contacts takes it
+      // seconds: the limit holds, and a refusal (a bug) or the limit keeps the planner's path.
+      const StopScope scope(stop);
+      try {
+        const PathCheckResult c = checkPath(scene_, checker, w);
+        if (c.ok) {
+          r.waypoints = std::move(w);
+          r.certificate = c;
+        }
+      } catch (const Stopped&) {
+      }
+    }
+    stats.accepted += s.accepted;
+    stats.evaluations += s.evaluations;
+    stats.seconds += watch.seconds();
+  }
+
+  /// Whether `a` beats `b` by the objective: shorter, or for clearance farther from contact.
+  bool better(const PlanResult& a, const PlanResult& b, const CollisionChecker& checker) const {
+    if (settings_.objective == PathObjective::Clearance &&
+        a.certificate.minClearance != b.certificate.minClearance)
+      return a.certificate.minClearance > b.certificate.minClearance;
+    return pathCost(checker, a.waypoints) < pathCost(checker, b.waypoints);
+  }
+
+  Factory make_;
   std::unique_ptr<Planner> inner_;
   Scene scene_;
   uint64_t seed_;
@@ -85,17 +144,33 @@ PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
                       "What --optimize improves: length (the distance the robots' points "
                       "travel), or clearance (then also away from contacts) (default length)"};
   objective.choices = {"length", "clearance"};
+  const ParamSpec restarts{
+      "restarts",
+      Type::Integer,
+      0,
+      1000,
+      0,
+      "With --optimize: plan N more times from seeds drawn from --seed, optimise each path and "
+      "keep the best by --objective (anytime improvement within the time limit; the optimiser "
+      "alone keeps the first path's way round the obstacles) (default 0)"};
   info.params.push_back(optimize);
   info.params.push_back(objective);
-  info.make = [make = info.make, optimize, objective](
+  info.params.push_back(restarts);
+  info.make = [make = info.make, optimize, objective, restarts](
                   const Scene& scene, const PlannerParams& params, const std::string& source) {
     OptimizeSettings s;
     s.objective =
         paramValue(params, objective) == 1 ? PathObjective::Clearance : PathObjective::Length;
+    Factory factory = [make, params, source](const Scene& sc, uint64_t seed) {
+      PlannerParams p = params;
+      p.seed = seed;
+      return make(sc, p, source);
+    };
     return std::make_unique<Optimizing>(
-        make(scene, params, source), scene, params.seed, s,
+        std::move(factory), scene, params.seed, s,
         std::map<std::string, double>{{"optimize", paramValue(params, optimize)},
-                                      {"objective", paramValue(params, objective)}});
+                                      {"objective", paramValue(params, objective)},
+                                      {"restarts", paramValue(params, restarts)}});
   };
   return info;
 }

@@ -37,7 +37,9 @@ std::string ParamSpec::parse(const std::string& text, double& v) const {
   return problem(v);
 }
 
-bool afterFirstPath(const std::string& phase) { return phase == "optimize" || phase == "simplify"; }
+bool afterFirstPath(const std::string& phase) {
+  return phase == "optimize" || phase == "simplify" || phase == "restarts";
+}
 
 std::string formatNumber(double v) {
   char buf[32];

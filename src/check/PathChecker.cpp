@@ -5,6 +5,8 @@
 #include <sstream>
 #include <vector>
 
+#include "mms/Termination.h"
+
 namespace mms {
 namespace {
 
@@ -109,6 +111,8 @@ class Certifier {
   // Checks the pose at parameter s: Collision when a robot hits something there, Uncertified
   // when some clearance does not exceed the displacement bound over +-half (why_ says which).
   Status evaluate(double s, bool movingOnly, double half) {
+    // A planner's time limit reaches the certifier (a no-op outside a planner's StopScope).
+    if ((r_.evaluations & 1023) == 1023) checkpoint();
     if (++r_.evaluations > settings_.maxEvaluations) {
       budgetExceeded_ = true;
       why_ = "could not certify within " + std::to_string(settings_.maxEvaluations) +

@@ -66,23 +66,31 @@ CertifiedMotion certifiedMotion(const Scene& scene, const CollisionChecker& chec
                                 const Roadmap& roadmap, const std::vector<size_t>& nodes,
                                 Random& rng, const ShortcutSettings& shortcuts) {
   CertifiedMotion m;
-  Stopwatch build;
-  std::optional<std::vector<Config>> w;
+  // The limit may strike in any step (a path along contacts takes the certifier seconds): then
+  // no motion, and the time of each step still counted.
+  Stopwatch step;
+  double* phase = &m.buildSeconds;  // the step under way
+  auto next = [&](double* following) {
+    *phase = step.seconds();
+    step = Stopwatch();
+    phase = following;
+  };
   try {
-    w = graphPathMotion(roadmap, nodes, startConfig(scene), goalConfig(scene));
+    std::optional<std::vector<Config>> built =
+        graphPathMotion(roadmap, nodes, startConfig(scene), goalConfig(scene));
+    next(&m.shortcutSeconds);
+    if (!built) return m;
+    std::vector<Config>& w = *built;
+    shortcutPath(scene, checker, rng, shortcuts.attempts, w, shortcuts.oneRobotAtATime);
+    next(&m.certifySeconds);
+    m.certificate = checkPath(scene, checker, w);
+    *phase = step.seconds();
+    m.ok = m.certificate.ok;
+    m.waypoints = std::move(w);
   } catch (const Stopped&) {
-    // The limit struck: no motion, and its time still counted.
+    *phase = step.seconds();
+    m.certificate.reason = "the time limit struck before the motion was certified";
   }
-  m.buildSeconds = build.seconds();
-  if (!w) return m;
-  Stopwatch shortcut;
-  shortcutPath(scene, checker, rng, shortcuts.attempts, *w, shortcuts.oneRobotAtATime);
-  m.shortcutSeconds = shortcut.seconds();
-  Stopwatch certify;
-  m.certificate = checkPath(scene, checker, *w);
-  m.certifySeconds = certify.seconds();
-  m.ok = m.certificate.ok;
-  m.waypoints = std::move(*w);
   return m;
 }
 
