@@ -92,7 +92,13 @@ PyScene sceneFromData(const py::handle& data, const std::string& source) {
   const Json doc = py::isinstance<py::str>(data)
                        ? json_in::parseText(data.cast<std::string>(), source)
                        : toJson(data, source);
-  return {std::make_shared<const Scene>(parseScene(doc, source)), source};
+  auto scene = std::make_shared<const Scene>(parseScene(doc, source));
+  // The same notes mms.load_scene gives for a file (angles in degrees by mistake).
+  ImportNotes notes;
+  noteAngles(*scene, source, notes);
+  for (const std::string& w : notes.warnings)
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+  return {std::move(scene), source};
 }
 
 /// Waypoints from Python: a sequence of sequences of 3 numbers per robot.

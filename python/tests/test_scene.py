@@ -89,6 +89,16 @@ def test_angles_in_degrees_are_noted(tmp_path):
         warnings.simplefilter("always")
         mms.load_scene(file)
     assert any("angles are in radians" in str(w.message) for w in caught)
+    # A scene made from Python data gets the same note, naming its source.
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        mms.Scene(data, source="mine")
+    assert any("mine: robots[0].goal: angle 90" in str(w.message) for w in caught)
+    # Warnings as errors: the note becomes the exception, not a crash.
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(UserWarning, match="radians"):
+            mms.Scene(data)
 
 
 def test_scenarios_match_the_command_line(tmp_path):

@@ -42,6 +42,7 @@ class Optimizing final : public Planner {
     const CollisionChecker checker(scene_);
     OptimizeStats total;
     improve(r, checker, seed_, stop, total);
+    r.stats.phases.emplace_back("optimize", total.seconds);
     const size_t restarts = size_t(parameters_.at("restarts"));
     if (restarts > 0) {
       Stopwatch watch;
@@ -60,12 +61,9 @@ class Optimizing final : public Planner {
           ++improved;
         }
       }
-      r.stats.phases.emplace_back("optimize", total.seconds);
       r.stats.phases.emplace_back("restarts", watch.seconds());
       r.stats.counts.emplace_back("restarts_run", run);
       r.stats.counts.emplace_back("restarts_improved", improved);
-    } else {
-      r.stats.phases.emplace_back("optimize", total.seconds);
     }
     r.stats.counts.emplace_back("optimize_changes", total.accepted);
     r.stats.counts.emplace_back("optimize_evaluations", total.evaluations);

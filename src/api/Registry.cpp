@@ -1,5 +1,4 @@
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "api/Adapters.h"
@@ -39,12 +38,6 @@ std::string ParamSpec::parse(const std::string& text, double& v) const {
 
 bool afterFirstPath(const std::string& phase) {
   return phase == "optimize" || phase == "simplify" || phase == "restarts";
-}
-
-std::string formatNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
 }
 
 double paramValue(const PlannerParams& params, const ParamSpec& spec) {

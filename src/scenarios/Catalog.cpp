@@ -1,12 +1,12 @@
 #include "scenarios/Catalog.h"
 
-#include <cstdio>
 #include <stdexcept>
 
 #include "io/SceneIO.h"
 #include "mms/Errors.h"
 #include "scenarios/Generators.h"
 #include "scenarios/RandomScene.h"
+#include "util/Number.h"
 
 namespace mms {
 
@@ -19,12 +19,6 @@ const std::vector<std::string>& scenarioNames() {
 }
 
 namespace {
-std::string formatNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 void requireRange(const std::string& prefix, const char* setting, double v, double lo, double hi) {
   if (!(v >= lo && v <= hi))
     throw InputError(prefix + setting + ": " + formatNumber(v) + " is not in [" + formatNumber(lo) +

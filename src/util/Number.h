@@ -21,4 +21,8 @@ inline std::optional<double> wholeNumber(const std::string& text) {
   return v;
 }
 
+/// `v` as messages and help texts show it: "%g" ("0.5", "1e+06"). Also declared in the public
+/// mms/Planner.h; defined once, in util/Number.cpp.
+std::string formatNumber(double v);
+
 }  // namespace mms
