@@ -12,6 +12,7 @@
 #include "planner/TwoRobotPlanner.h"
 #include "scenarios/Generators.h"
 #include "scenarios/RandomScene.h"
+#include "util/Deferred.h"
 
 namespace mms {
 namespace {
@@ -40,6 +41,27 @@ TEST(Limits, SliceConstructionStopsAtTheScopesLimit) {
   EXPECT_EQ(StopScope::current(), nullptr);
   const Slice whole(world, angle);
   EXPECT_GT(whole.fscCount(), 0u);
+}
+
+// What a limit cuts is not freed under the limit (tens of ms among 3000 obstacles) but kept
+// until no planner runs.
+TEST(Limits, ASliceCutByTheLimitIsFreedOnceNoPlannerRuns) {
+  const Scene scene = crowded(1);
+  const SliceWorld world(scene, 0);
+  freeDeferred();
+  {
+    const Termination soon(0.05);
+    const StopScope scope(soon);
+    EXPECT_THROW(Slice(world, exact::rationalAngleNear(0.3, 30)), Stopped);
+  }
+  EXPECT_GT(deferredCount(), 0u);
+  {
+    const RunningSolve running;
+    freeDeferredIfIdle();
+    EXPECT_GT(deferredCount(), 0u);  // a planner runs: its limit must not pay
+  }
+  freeDeferredIfIdle();
+  EXPECT_EQ(deferredCount(), 0u);
 }
 
 TEST(Limits, OneRobotPlannerEndsWhenTheLimitStrikesInsideASlice) {

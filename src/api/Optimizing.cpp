@@ -15,6 +15,7 @@
 #include "api/Adapters.h"
 #include "check/PathChecker.h"
 #include "path/Optimize.h"
+#include "util/Deferred.h"
 
 namespace mms {
 
@@ -34,8 +35,11 @@ class Optimizing final : public Planner {
         seed_(seed),
         settings_(settings),
         parameters_(std::move(parameters)) {}
+  // What a time limit cut is freed here, once no planner runs (util/Deferred.h).
+  ~Optimizing() override { freeDeferredIfIdle(); }
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
+    const RunningSolve running;
     PlanResult r = inner_->solve(stop, progress);
     for (const auto& [k, v] : parameters_) r.parameters[k] = v;
     if (!r.found() || parameters_.at("optimize") == 0) return r;

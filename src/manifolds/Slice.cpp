@@ -15,6 +15,7 @@
 
 #include "geometry/PolygonOps.h"
 #include "mms/Termination.h"
+#include "util/Deferred.h"
 
 namespace mms {
 
@@ -150,16 +151,13 @@ bool sumReaches(const Box& o, const Box& negBox, const Box& regionBox) {
 }
 
 // Sums of `obstacles` with -R_theta that can reach the region (boxes in doubles, with a margin).
-std::vector<PolygonWithHoles> reachingSums(const SliceWorld::Impl& w, const Polygon& neg,
-                                           bool negConvex, const Box& negBox,
-                                           const Box& regionBox) {
-  std::vector<PolygonWithHoles> sums;
+void reachingSums(const SliceWorld::Impl& w, const Polygon& neg, bool negConvex, const Box& negBox,
+                  const Box& regionBox, std::vector<PolygonWithHoles>& sums) {
   for (size_t i = 0; i < w.obstacles.size(); ++i) {
     if (!sumReaches(w.obstacleBoxes[i], negBox, regionBox)) continue;
     checkpoint();
     sums.push_back(minkowskiSum(w.obstacles[i], w.obstacleConvex[i], neg, negConvex));
   }
-  return sums;
 }
 
 // free minus the union of the sums. Among thousands of obstacles one union takes seconds, so
@@ -192,16 +190,24 @@ void subtractUnion(PolygonSet& free, const std::vector<PolygonWithHoles>& sums) 
     sets.push_back(std::make_unique<PolygonSet>());
     sets.back()->join(sums.begin() + i, sums.begin() + std::min(sums.size(), i + kGroup));
   }
-  while (sets.size() > 1) {
-    std::vector<std::unique_ptr<PolygonSet>> next;
-    for (size_t i = 0; i + 1 < sets.size(); i += 2) {
-      timed(edges(*sets[i]) + edges(*sets[i + 1]), [&] { sets[i]->join(*sets[i + 1]); });
-      next.push_back(std::move(sets[i]));
+  std::vector<std::unique_ptr<PolygonSet>> next;
+  try {
+    while (sets.size() > 1) {
+      for (size_t i = 0; i + 1 < sets.size(); i += 2) {
+        timed(edges(*sets[i]) + edges(*sets[i + 1]), [&] { sets[i]->join(*sets[i + 1]); });
+        next.push_back(std::move(sets[i]));
+      }
+      if (sets.size() % 2) next.push_back(std::move(sets.back()));
+      sets = std::move(next);
+      next.clear();
     }
-    if (sets.size() % 2) next.push_back(std::move(sets.back()));
-    sets = std::move(next);
+    timed(edges(free) + edges(*sets.front()), [&] { free.difference(*sets.front()); });
+  } catch (const Stopped&) {
+    // Freeing the partial unions would take tens of ms past the limit (util/Deferred.h).
+    freeLater(std::make_shared<decltype(sets)>(std::move(sets)));
+    freeLater(std::make_shared<decltype(next)>(std::move(next)));
+    throw;
   }
-  timed(edges(free) + edges(*sets.front()), [&] { free.difference(*sets.front()); });
 }
 
 }  // namespace
@@ -306,10 +312,16 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
   impl_->regionBox = {CGAL::to_double(xlo), CGAL::to_double(ylo), CGAL::to_double(xhi),
                       CGAL::to_double(yhi)};
   impl_->negBox = boundingBox(exact::toDouble(neg));
-  std::vector<PolygonWithHoles> sums =
-      reachingSums(w, neg, w.robotConvex, impl_->negBox, impl_->regionBox);
-  impl_->free = PolygonSet(region);
-  if (!sums.empty()) subtractUnion(impl_->free, sums);
+  std::vector<PolygonWithHoles> sums;
+  try {
+    reachingSums(w, neg, w.robotConvex, impl_->negBox, impl_->regionBox, sums);
+    impl_->free = PolygonSet(region);
+    if (!sums.empty()) subtractUnion(impl_->free, sums);
+  } catch (const Stopped&) {
+    freeLater(std::make_shared<decltype(sums)>(std::move(sums)));
+    freeLater(std::move(impl_));
+    throw;
+  }
   index(strategy);
 }
 

@@ -1,6 +1,7 @@
 #include "planner/Subspace.h"
 
 #include "mms/Termination.h"
+#include "util/Deferred.h"
 #include "util/Parallel.h"
 
 namespace mms {
@@ -36,7 +37,11 @@ void buildSlices(const SliceWorld& world, const std::vector<double>& thetas, uns
       });
     }
     for (size_t i = 0; i < n; ++i) {
-      if (errors[i]) std::rethrow_exception(errors[i]);
+      if (errors[i]) {
+        // The batch's finished slices would be freed past the limit (util/Deferred.h).
+        freeLater(std::make_shared<decltype(built)>(std::move(built)));
+        std::rethrow_exception(errors[i]);
+      }
       add(std::move(*built[i]));
     }
     done += n;
