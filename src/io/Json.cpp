@@ -61,7 +61,7 @@ Json parseText(const std::string& text, const std::string& source) {
   }
 }
 
-Json parseFile(const std::string& path) {
+std::string readFile(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path + ": (file): is a folder, not a file");
@@ -76,8 +76,10 @@ Json parseFile(const std::string& path) {
   in.seekg(0);
   std::string text(size_t(size), '\0');
   if (!in.read(text.data(), size)) throw InputError(path + ": (file): read failed");
-  return parseText(text, path);
+  return text;
 }
+
+Json parseFile(const std::string& path) { return parseText(readFile(path), path); }
 
 void Node::fail(const std::string& problem) const {
   throw InputError(file_ + ": " + (where_.empty() ? "(document)" : where_) + ": " + problem);

@@ -14,6 +14,9 @@ using Json = nlohmann::json;
 constexpr int kMaxDepth = 64;
 constexpr size_t kMaxFileBytes = size_t(256) << 20;
 
+/// The whole of a file a user names: one-line InputErrors for a folder, an unreadable or
+/// oversized (more than kMaxFileBytes) file.
+std::string readFile(const std::string& path);
 /// Reads and parses a whole file; rejects unreadable files, oversized files, syntax errors
 /// and nesting deeper than kMaxDepth.
 Json parseFile(const std::string& path);

@@ -3,7 +3,6 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "io/Json.h"
@@ -96,33 +95,22 @@ std::vector<Config> parseOmplPath(const std::string& text, const std::string& so
 }
 
 namespace {
-bool startsAsJson(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  char c = 0;
-  while (in.get(c))
+bool startsAsJson(const std::string& text) {
+  for (const char c : text)
     if (!std::isspace(static_cast<unsigned char>(c))) return c == '{';
   return false;
 }
 }  // namespace
 
 Path loadPath(const std::string& file, const Scene& scene) {
+  const std::string text = json_in::readFile(file);
   // OMPL.app's .path files are numbers, one line per state; ours are JSON (also when a user
   // names one FILE.path: `mms plan -o x.path` writes JSON).
-  if (std::filesystem::path(file).extension() == ".path" && !startsAsJson(file)) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec))
-      throw InputError(file + ": (file): is a folder, not a file");
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(file + ": (file): cannot open for reading");
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (text.str().size() > json_in::kMaxFileBytes)
-      throw InputError(file + ": (file): larger than 256 MiB");
-    Path p;
-    p.waypoints = parseOmplPath(text.str(), file, scene);
-    return p;
-  }
-  return parsePath(json_in::parseFile(file), file, scene);
+  if (std::filesystem::path(file).extension() != ".path" || startsAsJson(text))
+    return parsePath(json_in::parseText(text, file), file, scene);
+  Path p;
+  p.waypoints = parseOmplPath(text, file, scene);
+  return p;
 }
 
 nlohmann::json pathToJson(const Path& path, const Scene& scene) {

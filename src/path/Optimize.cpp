@@ -102,10 +102,16 @@ class Optimizer {
 
   // One attempt: two random points of the path, joined straight (all of every robot when
   // not `partial`) or in one robot's translation, rotation or both.
-  void shortcut(std::vector<Config>& w, bool partial) {
+  // The cost of the path up to each waypoint.
+  std::vector<double> cumulativeCost(const std::vector<Config>& w) const {
     std::vector<double> cum{0};
     for (size_t k = 1; k < w.size(); ++k)
       cum.push_back(cum.back() + segmentCost(checker_, w[k - 1], w[k]));
+    return cum;
+  }
+
+  void shortcut(std::vector<Config>& w, bool partial) {
+    const std::vector<double> cum = cumulativeCost(w);
     const double total = cum.back();
     if (total <= 0) return;
     double s1 = rng_.uniform(0, total), s2 = rng_.uniform(0, total);
@@ -114,15 +120,9 @@ class Optimizer {
     if (s2 - s1 < 1e-9 * total) return;
     std::vector<Config> c = w;
     const size_t i = pointAt(c, cum, s1);
-    std::vector<double> cc{0};
-    for (size_t k = 1; k < c.size(); ++k)
-      cc.push_back(cc.back() + segmentCost(checker_, c[k - 1], c[k]));
+    std::vector<double> cc = cumulativeCost(c);
     const size_t jj = pointAt(c, cc, s2);
-    if (c.size() > cc.size()) {  // inserted: the arc parameters once more
-      cc = {0};
-      for (size_t k = 1; k < c.size(); ++k)
-        cc.push_back(cc.back() + segmentCost(checker_, c[k - 1], c[k]));
-    }
+    if (c.size() > cc.size()) cc = cumulativeCost(c);  // inserted: the arc parameters once more
     if (jj <= i) return;
     const double oldCost = cc[jj] - cc[i];
     // The goal's angle counts modulo a full turn (as the certifier takes it): a stretch to the
