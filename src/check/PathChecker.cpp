@@ -50,13 +50,14 @@ class Certifier {
       rate_[i] = dp + checker_.radius(i) * dt;  // bound on any point's displacement per unit s
     }
     // Robots that stay put are checked once; pieces then only test the moving ones.
-    if (evaluate(0.0, /*movingOnly=*/false, 0.0) == Status::Collision) return fail(0.0, why_);
-    if (budgetExceeded_) return fail(0.0, why_);
+    if (evaluate(0.0, /*movingOnly=*/false, 0.0) == Status::Collision)
+      return fail(0.0, budgetExceeded_ ? budgetWhy_ : why());
     // Pieces are visited left to right; after a collision only what lies before it is
     // searched further, so the reported parameter is the first failure along the segment.
     double failAt = -1;
     std::string failWhy;
-    std::vector<Piece> stack{{0.0, 1.0}};
+    std::vector<Piece>& stack = stack_;  // kept between segments: no allocation per segment
+    stack.assign(1, {0.0, 1.0});
     while (!stack.empty()) {
       const Piece p = stack.back();
       stack.pop_back();
@@ -64,18 +65,18 @@ class Certifier {
       const double half = 0.5 * (p.s1 - p.s0);
       const double mid = p.s0 + half;
       const Status st = evaluate(mid, /*movingOnly=*/true, half);
-      if (budgetExceeded_) return fail(mid, why_);
+      if (budgetExceeded_) return fail(mid, budgetWhy_);
       if (st == Status::Certified) continue;
       if (st == Status::Collision) {
         failAt = mid;
-        failWhy = why_;
+        failWhy = why();
         stack.push_back({p.s0, mid});
         continue;
       }
       if (half * maxRate() < 0.25 * checker_.tolerance()) {
         failAt = mid;
         failWhy =
-            why_ + " (clearance below the contact tolerance " + num(checker_.tolerance()) + ")";
+            why() + " (clearance below the contact tolerance " + num(checker_.tolerance()) + ")";
         continue;
       }
       stack.push_back({mid, p.s1});
@@ -109,35 +110,42 @@ class Certifier {
   enum class Status { Certified, Uncertified, Collision };
 
   // Checks the pose at parameter s: Collision when a robot hits something there, Uncertified
-  // when some clearance does not exceed the displacement bound over +-half (why_ says which).
+  // when some clearance does not exceed the displacement bound over +-half (hit_ says which).
   Status evaluate(double s, bool movingOnly, double half) {
     // A planner's time limit reaches the certifier (a no-op outside a planner's StopScope).
     if ((r_.evaluations & 1023) == 1023) checkpoint();
     if (++r_.evaluations > settings_.maxEvaluations) {
       budgetExceeded_ = true;
-      why_ = "could not certify within " + std::to_string(settings_.maxEvaluations) +
-             " clearance evaluations (the path runs along contacts)";
+      budgetWhy_ = "could not certify within " + std::to_string(settings_.maxEvaluations) +
+                   " clearance evaluations (the path runs along contacts)";
       return Status::Collision;
     }
     Status st = Status::Certified;
-    auto note = [&](double distance, double bound, size_t robot, const std::string& other) {
+    // What is hit is recorded, not described: most evaluations are certified or subdivided,
+    // and a message per evaluation cost more than the clearance (the text is made on failure).
+    auto note = [&](double distance, double bound, size_t robot, const Contact& other) {
       r_.minClearance = std::min(r_.minClearance, std::max(0.0, distance - checker_.tolerance()));
       if (st == Status::Collision || distance > bound) return;
       st = distance <= 0 ? Status::Collision : Status::Uncertified;
-      why_ = "robot '" + scene_.robots[robot].name + "' hits " + other;
+      hit_ = {robot, other};
     };
     for (size_t i = 0; i < k_; ++i) {
       if (movingOnly != (rate_[i] > 0)) continue;
       const auto c = checker_.robotClearance(i, interpolated(i, s));
-      note(c.distance, half * rate_[i], i, c.nearest.describe(scene_));
+      note(c.distance, half * rate_[i], i, c.nearest);
     }
     for (size_t i = 0; i < k_; ++i)
       for (size_t j = i + 1; j < k_; ++j) {
         if (movingOnly != (rate_[i] > 0 || rate_[j] > 0)) continue;
         const double d = checker_.robotsDistance(i, interpolated(i, s), j, interpolated(j, s));
-        note(d, half * (rate_[i] + rate_[j]), i, "robot '" + scene_.robots[j].name + "'");
+        note(d, half * (rate_[i] + rate_[j]), i, Contact{Contact::Kind::Robot, j});
       }
     return st;
+  }
+
+  // "robot 'a' hits obstacle 3" for the last evaluation that was not certified.
+  std::string why() const {
+    return "robot '" + scene_.robots[hit_.robot].name + "' hits " + hit_.other.describe(scene_);
   }
 
   const Scene& scene_;
@@ -148,8 +156,13 @@ class Certifier {
   size_t index_ = 0;
   const Config *a_ = nullptr, *b_ = nullptr;
   std::vector<double> rate_;
+  std::vector<Piece> stack_;
   bool budgetExceeded_ = false;
-  std::string why_;
+  std::string budgetWhy_;
+  struct Hit {
+    size_t robot = 0;
+    Contact other;
+  } hit_;
 };
 
 }  // namespace
