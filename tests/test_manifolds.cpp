@@ -198,6 +198,50 @@ TEST(Slice, LocationInDoublesAgreesWithExactLocationNearEdges) {
   EXPECT_GT(nearEdge, 1000u);  // the probes did land inside cells, not only outside
 }
 
+// An overlay located in doubles first drops its exact arrangement and rebuilds it for the
+// first query near an edge: every answer must be the one of an overlay that kept it (Walk),
+// cell for cell, on random points and on points on, just inside and just outside the edges.
+TEST(Slice, OverlaysRebuildTheirArrangementForExactQueries) {
+  size_t nearEdge = 0;
+  for (uint64_t seed : {2, 5, 11}) {
+    const Scene s = randomScene(seed);
+    const SliceWorld world(s, 0);
+    Random rng(seed + 40);
+    const auto angle = exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30);
+    const Slice base(world, angle);
+    const double turn = rng.uniform(-M_PI, M_PI);
+    const Ring turned = placedRing(s.robots[0].shape, {0, 0, turn});
+    for (int k = 0; k < 3; ++k) {
+      const Vec2 offset{rng.uniform(s.bounds.xmin, s.bounds.xmax),
+                        rng.uniform(s.bounds.ymin, s.bounds.ymax)};
+      const MovedShape held{0, turn, turned, offset};
+      const Slice kept(base, {held}, PointLocation::Walk), dropped(base, {held});
+      ASSERT_EQ(dropped.fscCount(), kept.fscCount());
+      std::vector<Vec2> points;
+      for (int i = 0; i < 500; ++i)
+        points.push_back(
+            {rng.uniform(s.bounds.xmin, s.bounds.xmax), rng.uniform(s.bounds.ymin, s.bounds.ymax)});
+      for (size_t c = 0; c < kept.fscCount(); ++c) {
+        ASSERT_EQ(dropped.cell(c), kept.cell(c));
+        for (const Ring& r : kept.cell(c))
+          for (size_t i = 0; i < r.size(); ++i) {
+            const Vec2 a = r[i], e = r[(i + 1) % r.size()] - a;
+            const Vec2 normal = (1 / norm(e)) * Vec2{-e.y, e.x};
+            for (const double off : {0.0, 1e-13, -1e-13, 1e-10, -1e-10, 1e-4, -1e-4})
+              points.push_back(a + 0.5 * e + off * normal);
+          }
+      }
+      for (const Vec2& p : points) {
+        const int expected = kept.locate(p);
+        ASSERT_EQ(dropped.locate(p), expected)
+            << "seed " << seed << " (" << p.x << ", " << p.y << ")";
+        nearEdge += expected >= 0;
+      }
+    }
+  }
+  EXPECT_GT(nearEdge, 500u);
+}
+
 class LineVsChecker : public ::testing::TestWithParam<uint64_t> {};
 
 TEST_P(LineVsChecker, ArcsMatchSampledAngles) {

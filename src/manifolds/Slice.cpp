@@ -112,6 +112,13 @@ struct Slice::Impl {
   std::vector<std::vector<Ring>> cells;
   std::vector<double> areas;
   std::vector<std::vector<Box>> ringBoxes;  // per cell, per ring (outer boundary first)
+  // An overlay drops its exact arrangement once its cells are indexed: the arrangement is most
+  // of its memory (a two-robot run: 728 MB with it, 155 MB without, same slices), and the point
+  // location in doubles answers most queries. An exact query rebuilds it from these.
+  std::shared_ptr<Impl> rebuildBase;
+  std::vector<MovedShape> rebuildObstacles;
+  std::mutex rebuildMutex;
+  std::atomic<bool> exactReady{true};
   // On a base slice: sums of moved shapes with neg at the origin, by (shape, angle).
   std::mutex sumsMutex;
   std::map<std::pair<size_t, double>, std::shared_ptr<const PolygonWithHoles>> movedSums;
@@ -244,13 +251,12 @@ void Slice::index(PointLocation strategy) {
   }
 }
 
-Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
-             PointLocation strategy)
-    : impl_(base.impl_), angle_(base.angle_), theta_(base.theta_) {
-  if (base.impl_->cells.empty() || extraObstacles.empty()) return;
-  Impl& b = *base.impl_;
+namespace {
+
+// The Minkowski sums of held shapes that can reach base slice `b`'s region, from `b`'s cache.
+std::vector<PolygonWithHoles> overlaySums(Slice::Impl& b, const std::vector<MovedShape>& shapes) {
   std::vector<PolygonWithHoles> sums;
-  for (const MovedShape& m : extraObstacles) {
+  for (const MovedShape& m : shapes) {
     if (!sumReaches(boundingBox(m.placed()), b.negBox, b.regionBox)) continue;
     checkpoint();
     // Points from exact coordinates, not lazy translations: the overlay's predicates then
@@ -267,6 +273,18 @@ Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
     for (auto h = atOrigin.holes_begin(); h != atOrigin.holes_end(); ++h) moved.add_hole(move(*h));
     sums.push_back(std::move(moved));
   }
+  return sums;
+}
+
+}  // namespace
+
+Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
+             PointLocation strategy)
+    : impl_(base.impl_), angle_(base.angle_), theta_(base.theta_) {
+  if (base.impl_->cells.empty() || extraObstacles.empty()) return;
+  Impl& b = *base.impl_;
+  rebuildExact(b);  // a base keeps its arrangement; this only guards the assumption
+  std::vector<PolygonWithHoles> sums = overlaySums(b, extraObstacles);
   if (sums.empty()) return;  // nothing changes: share the base's cells
   auto im = std::make_shared<Impl>();
   im->neg = b.neg;
@@ -277,6 +295,40 @@ Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
   subtractUnion(im->free, sums);
   impl_ = std::move(im);
   index(strategy);
+  if (strategy != PointLocation::Auto) return;  // the other strategies answer exactly only
+  Impl& o = *impl_;
+  o.rebuildBase = base.impl_;
+  o.rebuildObstacles = extraObstacles;
+  o.locator.emplace<std::monostate>();
+  o.faceIndex.clear();
+  o.free = PolygonSet();
+  o.exactReady.store(false, std::memory_order_release);
+}
+
+// The overlay's arrangement again, as the constructor made it: the same operations on the
+// same exact input give the same faces in the same order, which is checked against the cells.
+void Slice::rebuildExact(Impl& im) {
+  if (im.exactReady.load(std::memory_order_acquire)) return;
+  const std::lock_guard lock(im.rebuildMutex);
+  if (im.exactReady.load(std::memory_order_relaxed)) return;
+  Impl& b = *im.rebuildBase;
+  const std::vector<PolygonWithHoles> sums = overlaySums(b, im.rebuildObstacles);
+  im.free = b.free;
+  subtractUnion(im.free, sums);
+  const Arrangement& arr = im.free.arrangement();
+  std::unordered_map<const void*, int> faceIndex;
+  size_t k = 0;
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (!f->contained() || f->is_unbounded()) continue;
+    // A face that is not the cell indexed in its place is left out: locate() then answers -1
+    // there (no cell), which planners treat as a point to skip, never as a wrong cell.
+    if (k < im.cells.size() && ccbRing(f->outer_ccb()) == im.cells[k].front())
+      faceIndex[&*f] = int(k);
+    ++k;
+  }
+  im.faceIndex = std::move(faceIndex);
+  im.locator.emplace<Walk>(arr);
+  im.exactReady.store(true, std::memory_order_release);
 }
 
 Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLocation strategy)
@@ -333,6 +385,8 @@ Slice::Slice(const Slice& carrier, const Slice& attached, Vec2 offset, PointLoca
   impl_->negBox = c.negBox;
   impl_->regionBox = c.regionBox;
   if (c.cells.empty() || attached.impl_->cells.empty()) return;
+  rebuildExact(*carrier.impl_);
+  rebuildExact(*attached.impl_);
   checkpoint();
   const auto [cs, sn] = angle_.cosSin();
   const FT ox(offset.x), oy(offset.y);
@@ -426,6 +480,7 @@ int Slice::locate(Vec2 p) const {
   if (impl_->cells.empty()) return -1;
   if (impl_->autoUpgrade)
     if (const auto fast = locateInDoubles(p)) return *fast;
+  rebuildExact(*impl_);
   const Point q = exact::toExact(p);
   int result = -1;
   auto answer = [&](const auto& obj) {

@@ -52,6 +52,7 @@ struct MovedShape {
 
 class Slice {
  public:
+  struct Impl;  // in Slice.cpp
   Slice(const SliceWorld& world, const exact::RationalAngle& angle,
         PointLocation strategy = PointLocation::Auto);
   /// The same slice with more obstacles (e.g. another robot held fixed): an overlay that only
@@ -83,8 +84,8 @@ class Slice {
   double area(size_t i) const;
 
  private:
-  struct Impl;
   void index(PointLocation strategy);
+  static void rebuildExact(Impl& im);
   std::optional<int> locateInDoubles(Vec2 p) const;
   std::shared_ptr<Impl> impl_;
   exact::RationalAngle angle_;
