@@ -64,6 +64,24 @@ TEST(Limits, ASliceCutByTheLimitIsFreedOnceNoPlannerRuns) {
   EXPECT_EQ(deferredCount(), 0u);
 }
 
+// A planner asked again (another query, a restart, another thread's run) frees what earlier
+// limits cut when it starts, so a long-lived planner does not keep one cut slice per run.
+TEST(Limits, WhatALimitCutIsFreedWhenTheNextRunStarts) {
+  const Scene scene = crowded(1);
+  freeDeferred();
+  const auto planner = makePlanner("mms", scene);
+  EXPECT_FALSE(planner->solve(Termination(0.05)).found());
+  EXPECT_GT(deferredCount(), 0u);  // the first slice among 1000 obstacles takes about 1 s
+  bool freed = false;
+  freeLater(std::shared_ptr<const int>(new int(0), [&freed](const int* p) {
+    freed = true;
+    delete p;
+  }));
+  EXPECT_FALSE(planner->solve(Termination(0.05)).found());
+  EXPECT_TRUE(freed);
+  EXPECT_GT(deferredCount(), 0u);  // the second run's own cut slice, freed with the planner
+}
+
 TEST(Limits, OneRobotPlannerEndsWhenTheLimitStrikesInsideASlice) {
   const Scene scene = crowded(1);
   MmsPlanner planner(scene, 0, {});

@@ -34,6 +34,26 @@ Scene randomScene(uint64_t seed) {
   return parseScene(sceneToJson(randomPolygonsScene(st)), "generated");
 }
 
+// Robot 0 of `s`, turned by `turn` (its shape `turned`), held still at a random place.
+MovedShape heldAtRandom(const Scene& s, double turn, const Ring& turned, Random& rng) {
+  const Vec2 offset{rng.uniform(s.bounds.xmin, s.bounds.xmax),
+                    rng.uniform(s.bounds.ymin, s.bounds.ymax)};
+  return {0, turn, turned, offset};
+}
+
+// Points on, just inside and just outside every edge and vertex of `slice`'s cells.
+void addEdgeProbes(const Slice& slice, std::vector<Vec2>& points) {
+  for (size_t c = 0; c < slice.fscCount(); ++c)
+    for (const Ring& r : slice.cell(c))
+      for (size_t i = 0; i < r.size(); ++i) {
+        const Vec2 a = r[i], e = r[(i + 1) % r.size()] - a;
+        const Vec2 normal = (1 / norm(e)) * Vec2{-e.y, e.x};
+        for (const double t : {0.0, 0.5})
+          for (const double off : {0.0, 1e-13, -1e-13, 1e-10, -1e-10, 1e-8, -1e-8, 1e-4, -1e-4})
+            points.push_back(a + t * e + off * normal);
+      }
+}
+
 }  // namespace
 
 // Every robot and obstacle replaced by its convex hull: slices then sum convex pairs directly.
@@ -108,9 +128,7 @@ TEST_P(SliceVsChecker, OverlaysMatchSlicesWithTheHeldShapeAsObstacle) {
     const double turn = rng.uniform(-M_PI, M_PI);
     const Ring turned = placedRing(s.robots[0].shape, {0, 0, turn});
     for (int k = 0; k < 3; ++k) {
-      const Vec2 offset{rng.uniform(s.bounds.xmin, s.bounds.xmax),
-                        rng.uniform(s.bounds.ymin, s.bounds.ymax)};
-      const MovedShape held{0, turn, turned, offset};
+      const MovedShape held = heldAtRandom(s, turn, turned, rng);
       const Slice overlay(base, {held});
       const SliceWorld withHeld(s, 0, {held.placed()});
       const Slice reference(withHeld, angle);
@@ -180,15 +198,7 @@ TEST(Slice, LocationInDoublesAgreesWithExactLocationNearEdges) {
     const Box& b = scene.bounds;
     for (int i = 0; i < 2000; ++i)
       points.push_back({rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax)});
-    for (size_t c = 0; c < exactPl.fscCount(); ++c)
-      for (const Ring& r : exactPl.cell(c))
-        for (size_t i = 0; i < r.size(); ++i) {
-          const Vec2 a = r[i], e = r[(i + 1) % r.size()] - a;
-          const Vec2 normal = (1 / norm(e)) * Vec2{-e.y, e.x};
-          for (const double t : {0.0, 0.5})
-            for (const double off : {0.0, 1e-13, -1e-13, 1e-10, -1e-10, 1e-8, -1e-8, 1e-4, -1e-4})
-              points.push_back(a + t * e + off * normal);
-        }
+    addEdgeProbes(exactPl, points);
     for (const Vec2& p : points) {
       const int expected = exactPl.locate(p);
       ASSERT_EQ(autoPl.locate(p), expected) << "(" << p.x << ", " << p.y << ")";
@@ -212,25 +222,15 @@ TEST(Slice, OverlaysRebuildTheirArrangementForExactQueries) {
     const double turn = rng.uniform(-M_PI, M_PI);
     const Ring turned = placedRing(s.robots[0].shape, {0, 0, turn});
     for (int k = 0; k < 3; ++k) {
-      const Vec2 offset{rng.uniform(s.bounds.xmin, s.bounds.xmax),
-                        rng.uniform(s.bounds.ymin, s.bounds.ymax)};
-      const MovedShape held{0, turn, turned, offset};
+      const MovedShape held = heldAtRandom(s, turn, turned, rng);
       const Slice kept(base, {held}, PointLocation::Walk), dropped(base, {held});
       ASSERT_EQ(dropped.fscCount(), kept.fscCount());
       std::vector<Vec2> points;
       for (int i = 0; i < 500; ++i)
         points.push_back(
             {rng.uniform(s.bounds.xmin, s.bounds.xmax), rng.uniform(s.bounds.ymin, s.bounds.ymax)});
-      for (size_t c = 0; c < kept.fscCount(); ++c) {
-        ASSERT_EQ(dropped.cell(c), kept.cell(c));
-        for (const Ring& r : kept.cell(c))
-          for (size_t i = 0; i < r.size(); ++i) {
-            const Vec2 a = r[i], e = r[(i + 1) % r.size()] - a;
-            const Vec2 normal = (1 / norm(e)) * Vec2{-e.y, e.x};
-            for (const double off : {0.0, 1e-13, -1e-13, 1e-10, -1e-10, 1e-4, -1e-4})
-              points.push_back(a + 0.5 * e + off * normal);
-          }
-      }
+      for (size_t c = 0; c < kept.fscCount(); ++c) ASSERT_EQ(dropped.cell(c), kept.cell(c));
+      addEdgeProbes(kept, points);
       for (const Vec2& p : points) {
         const int expected = kept.locate(p);
         ASSERT_EQ(dropped.locate(p), expected)

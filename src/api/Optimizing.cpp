@@ -40,6 +40,9 @@ class Optimizing final : public Planner {
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
     const RunningSolve running;
+    // What earlier runs' limits cut (this planner's last query, another thread's run) is freed
+    // at the start of this one, out of its budget instead of past it (util/Deferred.h).
+    freeDeferred();
     PlanResult r = inner_->solve(stop, progress);
     for (const auto& [k, v] : parameters_) r.parameters[k] = v;
     if (!r.found() || parameters_.at("optimize") == 0) return r;
@@ -54,6 +57,7 @@ class Optimizing final : public Planner {
       Random seeds(seed_ ^ 0x7265737461727473ull);
       for (; run < restarts && !stop(); ++run) {
         const uint64_t seed = seeds.bits();
+        freeDeferred();  // the last restart's race may have cut a slice: not one kept per run
         PlanResult other = make_(scene_, seed)->solve(stop);
         if (!other.found()) continue;
         OptimizeStats s;

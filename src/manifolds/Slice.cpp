@@ -123,6 +123,8 @@ struct Slice::Impl {
   std::mutex sumsMutex;
   std::map<std::pair<size_t, double>, std::shared_ptr<const PolygonWithHoles>> movedSums;
 
+  std::vector<PolygonWithHoles> heldSums(const std::vector<MovedShape>& shapes);
+
   const PolygonWithHoles& movedSum(const MovedShape& m) {
     const std::pair<size_t, double> key{m.shape, m.angle};
     {
@@ -191,14 +193,13 @@ void subtractUnion(PolygonSet& free, const std::vector<PolygonWithHoles>& sums) 
   };
   auto edges = [](const PolygonSet& p) { return p.arrangement().number_of_edges(); };
   // Pointers: a PolygonSet has no move constructor, and copying one copies its arrangement.
-  std::vector<std::unique_ptr<PolygonSet>> sets;
-  for (size_t i = 0; i < sums.size(); i += kGroup) {
-    checkpoint();
-    sets.push_back(std::make_unique<PolygonSet>());
-    sets.back()->join(sums.begin() + i, sums.begin() + std::min(sums.size(), i + kGroup));
-  }
-  std::vector<std::unique_ptr<PolygonSet>> next;
+  std::vector<std::unique_ptr<PolygonSet>> sets, next;
   try {
+    for (size_t i = 0; i < sums.size(); i += kGroup) {
+      checkpoint();
+      sets.push_back(std::make_unique<PolygonSet>());
+      sets.back()->join(sums.begin() + i, sums.begin() + std::min(sums.size(), i + kGroup));
+    }
     while (sets.size() > 1) {
       for (size_t i = 0; i + 1 < sets.size(); i += 2) {
         timed(edges(*sets[i]) + edges(*sets[i + 1]), [&] { sets[i]->join(*sets[i + 1]); });
@@ -211,8 +212,8 @@ void subtractUnion(PolygonSet& free, const std::vector<PolygonWithHoles>& sums) 
     timed(edges(free) + edges(*sets.front()), [&] { free.difference(*sets.front()); });
   } catch (const Stopped&) {
     // Freeing the partial unions would take tens of ms past the limit (util/Deferred.h).
-    freeLater(std::make_shared<decltype(sets)>(std::move(sets)));
-    freeLater(std::make_shared<decltype(next)>(std::move(next)));
+    freeLaterMoved(sets);
+    freeLaterMoved(next);
     throw;
   }
 }
@@ -251,17 +252,15 @@ void Slice::index(PointLocation strategy) {
   }
 }
 
-namespace {
-
-// The Minkowski sums of held shapes that can reach base slice `b`'s region, from `b`'s cache.
-std::vector<PolygonWithHoles> overlaySums(Slice::Impl& b, const std::vector<MovedShape>& shapes) {
+// The Minkowski sums of held shapes that can reach this (base) slice's region, from its cache.
+std::vector<PolygonWithHoles> Slice::Impl::heldSums(const std::vector<MovedShape>& shapes) {
   std::vector<PolygonWithHoles> sums;
   for (const MovedShape& m : shapes) {
-    if (!sumReaches(boundingBox(m.placed()), b.negBox, b.regionBox)) continue;
+    if (!sumReaches(boundingBox(m.placed()), negBox, regionBox)) continue;
     checkpoint();
     // Points from exact coordinates, not lazy translations: the overlay's predicates then
     // fall back on exact values at hand instead of evaluating a construction per point.
-    const PolygonWithHoles& atOrigin = b.movedSum(m);
+    const PolygonWithHoles& atOrigin = movedSum(m);
     const auto dx = CGAL::exact(FT(m.offset.x)), dy = CGAL::exact(FT(m.offset.y));
     auto move = [&](const Polygon& poly) {
       Polygon out;
@@ -276,15 +275,13 @@ std::vector<PolygonWithHoles> overlaySums(Slice::Impl& b, const std::vector<Move
   return sums;
 }
 
-}  // namespace
-
 Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
              PointLocation strategy)
     : impl_(base.impl_), angle_(base.angle_), theta_(base.theta_) {
   if (base.impl_->cells.empty() || extraObstacles.empty()) return;
   Impl& b = *base.impl_;
   rebuildExact(b);  // a base keeps its arrangement; this only guards the assumption
-  std::vector<PolygonWithHoles> sums = overlaySums(b, extraObstacles);
+  std::vector<PolygonWithHoles> sums = b.heldSums(extraObstacles);
   if (sums.empty()) return;  // nothing changes: share the base's cells
   auto im = std::make_shared<Impl>();
   im->neg = b.neg;
@@ -312,7 +309,7 @@ void Slice::rebuildExact(Impl& im) {
   const std::lock_guard lock(im.rebuildMutex);
   if (im.exactReady.load(std::memory_order_relaxed)) return;
   Impl& b = *im.rebuildBase;
-  const std::vector<PolygonWithHoles> sums = overlaySums(b, im.rebuildObstacles);
+  const std::vector<PolygonWithHoles> sums = b.heldSums(im.rebuildObstacles);
   im.free = b.free;
   subtractUnion(im.free, sums);
   const Arrangement& arr = im.free.arrangement();
@@ -370,7 +367,7 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
     impl_->free = PolygonSet(region);
     if (!sums.empty()) subtractUnion(impl_->free, sums);
   } catch (const Stopped&) {
-    freeLater(std::make_shared<decltype(sums)>(std::move(sums)));
+    freeLaterMoved(sums);
     freeLater(std::move(impl_));
     throw;
   }

@@ -52,7 +52,6 @@ struct MovedShape {
 
 class Slice {
  public:
-  struct Impl;  // in Slice.cpp
   Slice(const SliceWorld& world, const exact::RationalAngle& angle,
         PointLocation strategy = PointLocation::Auto);
   /// The same slice with more obstacles (e.g. another robot held fixed): an overlay that only
@@ -76,7 +75,8 @@ class Slice {
   size_t fscCount() const;
   /// The FSC whose interior contains p, or -1 (p forbidden or on a cell's boundary).
   /// Safe to call from several threads. Exact: decided in doubles when p is clearly away from
-  /// every edge of the cells near it, by CGAL's point location otherwise.
+  /// every edge of the cells near it, by CGAL's point location otherwise. An overlay that
+  /// dropped its arrangement rebuilds it then, so this can throw Stopped under a StopScope.
   int locate(Vec2 p) const;
   /// FSC i as rings in doubles: its outer boundary (counter-clockwise) then its holes.
   const std::vector<Ring>& cell(size_t i) const;
@@ -84,6 +84,7 @@ class Slice {
   double area(size_t i) const;
 
  private:
+  struct Impl;
   void index(PointLocation strategy);
   static void rebuildExact(Impl& im);
   std::optional<int> locateInDoubles(Vec2 p) const;

@@ -100,8 +100,6 @@ class Optimizer {
     return j;
   }
 
-  // One attempt: two random points of the path, joined straight (all of every robot when
-  // not `partial`) or in one robot's translation, rotation or both.
   // The cost of the path up to each waypoint.
   std::vector<double> cumulativeCost(const std::vector<Config>& w) const {
     std::vector<double> cum{0};
@@ -110,6 +108,8 @@ class Optimizer {
     return cum;
   }
 
+  // One attempt: two random points of the path, joined straight (all of every robot when
+  // not `partial`) or in one robot's translation, rotation or both.
   void shortcut(std::vector<Config>& w, bool partial) {
     const std::vector<double> cum = cumulativeCost(w);
     const double total = cum.back();

@@ -38,9 +38,13 @@ void buildSlices(const SliceWorld& world, const std::vector<double>& thetas, uns
     }
     for (size_t i = 0; i < n; ++i) {
       if (errors[i]) {
-        // The batch's finished slices would be freed past the limit (util/Deferred.h).
-        freeLater(std::make_shared<decltype(built)>(std::move(built)));
-        std::rethrow_exception(errors[i]);
+        try {
+          std::rethrow_exception(errors[i]);
+        } catch (const Stopped&) {
+          // The batch's finished slices would be freed past the limit (util/Deferred.h).
+          freeLaterMoved(built);
+          throw;
+        }
       }
       add(std::move(*built[i]));
     }

@@ -9,6 +9,7 @@
 #include "geometry/PolygonOps.h"
 #include "path/Motion.h"
 #include "planner/Rounds.h"
+#include "util/Deferred.h"
 #include "util/Parallel.h"
 
 namespace mms {
@@ -189,12 +190,24 @@ void TwoRobotPlanner::sliceNarrowArcs(Subspace& sub) {
   {
     const TimeCharge charge(stats_.manifolds.sliceSeconds);
     errors = parallelFor(middles.size(), settings_.threads, [&](size_t i) {
-      const Slice base(*worlds_[moving], middles[i]);
-      built[i].emplace(sub.overlay(base));
+      auto base = std::make_shared<const Slice>(*worlds_[moving], middles[i]);
+      try {
+        built[i].emplace(sub.overlay(*base));
+      } catch (const Stopped&) {
+        freeLater(std::move(base));  // a whole base slice: not freed past the limit
+        throw;
+      }
     });
   }
   for (size_t i = 0; i < middles.size(); ++i) {
-    if (errors[i]) std::rethrow_exception(errors[i]);
+    if (errors[i]) {
+      try {
+        std::rethrow_exception(errors[i]);
+      } catch (const Stopped&) {
+        freeLaterMoved(built);  // the batch's finished slices (util/Deferred.h)
+        throw;
+      }
+    }
     sub.addLocalOverlay(std::move(*built[i]));
   }
 }

@@ -22,11 +22,14 @@ Graveyard& graveyard() {
 
 }  // namespace
 
-void freeLater(std::shared_ptr<const void> garbage) {
+void freeLater(std::shared_ptr<const void> garbage) noexcept {
   if (!garbage) return;
   Graveyard& g = graveyard();
   const std::lock_guard lock(g.mutex);
-  g.kept.push_back(std::move(garbage));
+  try {
+    g.kept.push_back(std::move(garbage));
+  } catch (...) {  // no memory to keep it: `garbage` is freed on return
+  }
 }
 
 void freeDeferred() {

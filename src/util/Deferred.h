@@ -1,16 +1,29 @@
 #pragma once
 // Work cut by a time limit leaves exact structures behind (a slice half built among thousands
 // of obstacles: arrangements of millions of exact points). Freeing them takes tens of ms, past
-// the limit that cut them. They are kept here instead and freed when no planner runs: by the
-// outermost planner's destructor, or never in a command about to exit (the system takes the
-// memory back at once). At most one unfinished manifold per thread and stopped run is kept.
+// the limit that cut them. They are kept here instead and freed within some budget: at the
+// start of the next run and between restarts (api/Optimizing.cpp), by the outermost planner's
+// destructor when no planner runs, or never in a command about to exit (the system takes the
+// memory back at once). So at most the unfinished manifolds of the runs since the last start
+// are kept: one per thread of each.
 #include <cstddef>
 #include <memory>
 
 namespace mms {
 
-/// Keeps `garbage` alive until freeDeferred().
-void freeLater(std::shared_ptr<const void> garbage);
+/// Keeps `garbage` alive until freeDeferred(). Never throws: called while a Stopped unwinds,
+/// it frees `garbage` at once when it cannot keep it (no memory left).
+void freeLater(std::shared_ptr<const void> garbage) noexcept;
+
+/// Moves `value` (a local about to be unwound) into the garbage; on no memory it stays where
+/// it is and is freed with its scope.
+template <class T>
+void freeLaterMoved(T& value) noexcept {
+  try {
+    freeLater(std::make_shared<T>(std::move(value)));
+  } catch (...) {
+  }
+}
 
 /// Frees what freeLater() kept.
 void freeDeferred();
