@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "geometry/Exact.h"
 #include "io/SceneIO.h"
 #include "manifolds/Line.h"
 #include "manifolds/Slice.h"
@@ -41,6 +42,52 @@ void BM_Slice(benchmark::State& state) {
   state.counters["cells"] = double(cells) / double(state.iterations());
 }
 BENCHMARK(BM_Slice)->Unit(benchmark::kMillisecond);
+
+// A small scene (three rectangles, two 5-gons): what a slice and an overlay cost apart from the
+// size of their arrangements, which is most of two-robot planning on corridors and niches.
+const Scene& nicheScene() {
+  static const Scene s = nicheSwapScene(1, 0.5);
+  return s;
+}
+
+void BM_SliceSmall(benchmark::State& state) {
+  const SliceWorld world(nicheScene(), 0);
+  Random rng(1);
+  for (auto _ : state) {
+    const Slice s(world, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
+    benchmark::DoNotOptimize(s.fscCount());
+  }
+}
+BENCHMARK(BM_SliceSmall)->Unit(benchmark::kMicrosecond);
+
+// The same with each robot replaced by its convex hull: what the reduced convolution of a
+// non-convex robot costs over summing convex pairs directly.
+void BM_SliceSmallHull(benchmark::State& state) {
+  Scene sc = nicheScene();
+  for (Robot& r : sc.robots) r.shape = exact::convexHull(r.shape);
+  const SliceWorld world(sc, 0);
+  Random rng(1);
+  for (auto _ : state) {
+    const Slice s(world, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
+    benchmark::DoNotOptimize(s.fscCount());
+  }
+}
+BENCHMARK(BM_SliceSmallHull)->Unit(benchmark::kMicrosecond);
+
+// Robot 0's slice with robot 1 held at its start, as a two-robot subspace builds it.
+void BM_OverlaySmall(benchmark::State& state) {
+  const Scene& sc = nicheScene();
+  const SliceWorld world(sc, 0);
+  const Slice base(world, exact::rationalAngleNear(0.3, 30));
+  const Pose held = sc.robots[1].start;
+  const MovedShape m{
+      1, held.theta, placedRing(sc.robots[1].shape, {0, 0, held.theta}), {held.x, held.y}};
+  for (auto _ : state) {
+    const Slice s(base, {m});
+    benchmark::DoNotOptimize(s.fscCount());
+  }
+}
+BENCHMARK(BM_OverlaySmall)->Unit(benchmark::kMicrosecond);
 
 void BM_Line(benchmark::State& state) {
   const Scene& s = referenceScene();
