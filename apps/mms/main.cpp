@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <regex>
 
 #include "Commands.h"
 #include "mms/Errors.h"
@@ -15,6 +16,12 @@
 #include "util/MemoryLimit.h"
 
 namespace {
+
+// CLI11's "Failed parsing abc as a FLOAT" in the wording of the scene readers' errors.
+std::string parseErrorLine(const CLI::ParseError& e) {
+  static const std::regex kConversion("Failed parsing (.*) as a (FLOAT|INT|UINT|NUMBER)");
+  return std::regex_replace(mms::oneLine(e.what()), kConversion, "'$1' is not a number");
+}
 
 // --memory-limit: 0 (none) or a cap large enough for the program itself to start.
 const CLI::Validator memoryLimitMb(
@@ -371,7 +378,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "mms: " << mms::oneLine(e.what()) << " (see mms --help)\n";
+    std::cerr << "mms: " << parseErrorLine(e) << " (see mms --help)\n";
     return 2;
   }
 
