@@ -10,6 +10,7 @@
 #include <atomic>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <unordered_map>
 #include <variant>
 
@@ -79,6 +80,7 @@ using Landmarks = CGAL::Arr_landmarks_point_location<Arrangement>;
 
 Ring ccbRing(Arrangement::Ccb_halfedge_const_circulator first) {
   Ring r;
+  r.reserve(size_t(CGAL::circulator_size(first)));  // exact: cells are most of a slice's memory
   auto c = first;
   do {
     r.push_back(exact::toDouble(c->source()->point()));
@@ -99,8 +101,11 @@ struct Slice::Impl {
   bool negConvex = false;
   Box negBox;     // of neg, in doubles (for culling)
   Box regionBox;  // reference points keeping the robot inside the bounds (doubles, for culling)
-  PolygonSet free;
-  std::variant<std::monostate, Walk, Trapezoid, Landmarks> locator;
+  // Absent on an overlay that dropped it: an empty polygon set still holds ~0.9 KB of heap.
+  std::optional<PolygonSet> free;
+  // The larger locators apart: a trapezoidal map's object alone is ~230 bytes, on every slice.
+  std::variant<std::monostate, Walk, std::unique_ptr<Trapezoid>, std::unique_ptr<Landmarks>>
+      locator;
   // Auto: the walk answers until kUpgradeAfter queries, then a trapezoidal map takes over.
   static constexpr size_t kUpgradeAfter = 600;
   bool autoUpgrade = false;
@@ -116,7 +121,7 @@ struct Slice::Impl {
   // of its memory (a two-robot run: 728 MB with it, 155 MB without, same slices), and the point
   // location in doubles answers most queries. An exact query rebuilds it from these.
   std::shared_ptr<Impl> rebuildBase;
-  std::vector<MovedShape> rebuildObstacles;
+  std::shared_ptr<const std::vector<MovedShape>> rebuildObstacles;
   std::mutex rebuildMutex;
   std::atomic<bool> exactReady{true};
   // On a base slice: sums of moved shapes with neg at the origin, by (shape, angle).
@@ -226,18 +231,24 @@ void subtractUnion(PolygonSet& free, const std::vector<PolygonWithHoles>& sums) 
 // Cells are the arrangement's contained faces; the locator answers queries on them.
 void Slice::index(PointLocation strategy) {
   Impl& im = *impl_;
-  const Arrangement& arr = im.free.arrangement();
+  const Arrangement& arr = im.free->arrangement();
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
     if (!f->contained() || f->is_unbounded()) continue;
-    std::vector<Ring> rings{ccbRing(f->outer_ccb())};
+    std::vector<Ring> rings;
+    rings.reserve(1 + f->number_of_inner_ccbs());
+    rings.push_back(ccbRing(f->outer_ccb()));
     for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h)
       rings.push_back(ccbRing(*h));
     im.faceIndex[&*f] = int(im.cells.size());
     im.areas.push_back(ringsArea(rings));
     std::vector<Box>& boxes = im.ringBoxes.emplace_back();
+    boxes.reserve(rings.size());
     for (const Ring& r : rings) boxes.push_back(boundingBox(r));
     im.cells.push_back(std::move(rings));
   }
+  im.cells.shrink_to_fit();
+  im.areas.shrink_to_fit();
+  im.ringBoxes.shrink_to_fit();
   switch (strategy) {
     case PointLocation::Auto:
       im.autoUpgrade = true;
@@ -247,10 +258,10 @@ void Slice::index(PointLocation strategy) {
       im.locator.emplace<Walk>(arr);
       break;
     case PointLocation::Trapezoid:
-      im.locator.emplace<Trapezoid>(arr);
+      im.locator = std::make_unique<Trapezoid>(arr);
       break;
     case PointLocation::Landmarks:
-      im.locator.emplace<Landmarks>(arr);
+      im.locator = std::make_unique<Landmarks>(arr);
       break;
   }
 }
@@ -280,11 +291,15 @@ std::vector<PolygonWithHoles> Slice::Impl::heldSums(const std::vector<MovedShape
 
 Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
              PointLocation strategy)
+    : Slice(base, std::make_shared<const std::vector<MovedShape>>(extraObstacles), strategy) {}
+
+Slice::Slice(const Slice& base, std::shared_ptr<const std::vector<MovedShape>> extraObstacles,
+             PointLocation strategy)
     : impl_(base.impl_), angle_(base.angle_), theta_(base.theta_) {
-  if (base.impl_->cells.empty() || extraObstacles.empty()) return;
+  if (base.impl_->cells.empty() || extraObstacles->empty()) return;
   Impl& b = *base.impl_;
   rebuildExact(b);  // a base keeps its arrangement; this only guards the assumption
-  std::vector<PolygonWithHoles> sums = b.heldSums(extraObstacles);
+  std::vector<PolygonWithHoles> sums = b.heldSums(*extraObstacles);
   if (sums.empty()) return;  // nothing changes: share the base's cells
   auto im = std::make_shared<Impl>();
   im->neg = b.neg;
@@ -292,16 +307,16 @@ Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
   im->negBox = b.negBox;
   im->regionBox = b.regionBox;
   im->free = b.free;
-  subtractUnion(im->free, sums);
+  subtractUnion(*im->free, sums);
   impl_ = std::move(im);
   index(strategy);
   if (strategy != PointLocation::Auto) return;  // the other strategies answer exactly only
   Impl& o = *impl_;
   o.rebuildBase = base.impl_;
-  o.rebuildObstacles = extraObstacles;
+  o.rebuildObstacles = std::move(extraObstacles);
   o.locator.emplace<std::monostate>();
-  o.faceIndex.clear();
-  o.free = PolygonSet();
+  std::unordered_map<const void*, int>().swap(o.faceIndex);  // clear() would keep its buckets
+  o.free.reset();
   o.exactReady.store(false, std::memory_order_release);
 }
 
@@ -312,10 +327,10 @@ void Slice::rebuildExact(Impl& im) {
   const std::lock_guard lock(im.rebuildMutex);
   if (im.exactReady.load(std::memory_order_relaxed)) return;
   Impl& b = *im.rebuildBase;
-  const std::vector<PolygonWithHoles> sums = b.heldSums(im.rebuildObstacles);
+  const std::vector<PolygonWithHoles> sums = b.heldSums(*im.rebuildObstacles);
   im.free = b.free;
-  subtractUnion(im.free, sums);
-  const Arrangement& arr = im.free.arrangement();
+  subtractUnion(*im.free, sums);
+  const Arrangement& arr = im.free->arrangement();
   std::unordered_map<const void*, int> faceIndex;
   size_t k = 0;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
@@ -367,8 +382,8 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
   std::vector<PolygonWithHoles> sums;
   try {
     reachingSums(w, neg, w.robotConvex, impl_->negBox, impl_->regionBox, sums);
-    impl_->free = PolygonSet(region);
-    if (!sums.empty()) subtractUnion(impl_->free, sums);
+    impl_->free.emplace(region);
+    if (!sums.empty()) subtractUnion(*impl_->free, sums);
   } catch (const Stopped&) {
     freeLaterMoved(sums);
     freeLater(std::move(impl_));
@@ -398,7 +413,7 @@ Slice::Slice(const Slice& carrier, const Slice& attached, Vec2 offset, PointLoca
     return out;
   };
   std::vector<PolygonWithHoles> faces;
-  attached.impl_->free.polygons_with_holes(std::back_inserter(faces));
+  attached.impl_->free->polygons_with_holes(std::back_inserter(faces));
   std::vector<PolygonWithHoles> movedFaces;
   for (const PolygonWithHoles& f : faces) {
     PolygonWithHoles m(move(f.outer_boundary()));
@@ -409,7 +424,7 @@ Slice::Slice(const Slice& carrier, const Slice& attached, Vec2 offset, PointLoca
   PolygonSet moved;
   moved.join(movedFaces.begin(), movedFaces.end());
   impl_->free = c.free;
-  impl_->free.intersection(moved);
+  impl_->free->intersection(moved);
   index(strategy);
 }
 
@@ -492,7 +507,7 @@ int Slice::locate(Vec2 p) const {
   if (impl_->autoUpgrade) {
     if (impl_->queries.fetch_add(1, std::memory_order_relaxed) + 1 >= Impl::kUpgradeAfter) {
       std::call_once(impl_->upgradeOnce, [&] {
-        impl_->upgraded = std::make_unique<Trapezoid>(impl_->free.arrangement());
+        impl_->upgraded = std::make_unique<Trapezoid>(impl_->free->arrangement());
         impl_->upgradedReady.store(true, std::memory_order_release);
       });
     }
@@ -503,8 +518,11 @@ int Slice::locate(Vec2 p) const {
   }
   std::visit(
       [&](const auto& pl) {
-        if constexpr (!std::is_same_v<std::decay_t<decltype(pl)>, std::monostate>)
+        using T = std::decay_t<decltype(pl)>;
+        if constexpr (std::is_same_v<T, Walk>)
           answer(pl.locate(q));
+        else if constexpr (!std::is_same_v<T, std::monostate>)
+          answer(pl->locate(q));
       },
       impl_->locator);
   return result;

@@ -59,6 +59,10 @@ class Slice {
   /// new obstacles cannot reach it. Overlays of one base may be built from several threads.
   Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
         PointLocation strategy = PointLocation::Auto);
+  /// The same, the obstacles shared by the overlays that keep them to rebuild from (a
+  /// subspace's overlays all hold the same robots).
+  Slice(const Slice& base, std::shared_ptr<const std::vector<MovedShape>> extraObstacles,
+        PointLocation strategy = PointLocation::Auto);
   /// A compound of two robots in a fixed relative pose translating as one: where the first
   /// robot's reference point may be so that it is free in `carrier` (its slice) and the second,
   /// at `offset` in the first's frame, is free in `attached` (its slice, at its own angle).

@@ -87,8 +87,8 @@ Subspace::Subspace(uint32_t id, const Scene& scene, const CollisionChecker& chec
                    SubspaceStats& stats)
     : frame_{id, scene.robots.size(), moving, std::move(held)},
       checker_(checker),
-      heldShapes_(movedShapes(scene, frame_.held)),
-      heldRings_(placedRings(heldShapes_)),
+      heldShapes_(std::make_shared<const std::vector<MovedShape>>(movedShapes(scene, frame_.held))),
+      heldRings_(placedRings(*heldShapes_)),
       lineWorld_(scene, moving, heldRings_),
       roadmap_(roadmap),
       stats_(stats),

@@ -138,8 +138,8 @@ class Subspace {
 
   HeldFrame frame_;
   const CollisionChecker& checker_;
-  std::vector<MovedShape> heldShapes_;
-  std::vector<Ring> heldRings_;  // the same in doubles, for lines
+  std::shared_ptr<const std::vector<MovedShape>> heldShapes_;  // shared by its overlays
+  std::vector<Ring> heldRings_;                                // the same in doubles, for lines
   LineWorld lineWorld_;
   Roadmap& roadmap_;
   SubspaceStats& stats_;
