@@ -99,50 +99,64 @@ double ringsArea(const std::vector<Ring>& rings) {
 struct Slice::Impl {
   Polygon neg;  // -R_theta
   bool negConvex = false;
+  // Auto: located in doubles first; the walk answers until kUpgradeAfter exact queries, then a
+  // trapezoidal map takes over.
+  bool autoUpgrade = false;
+  static constexpr size_t kUpgradeAfter = 600;
   Box negBox;     // of neg, in doubles (for culling)
   Box regionBox;  // reference points keeping the robot inside the bounds (doubles, for culling)
-  // Absent on an overlay that dropped it: an empty polygon set still holds ~0.9 KB of heap.
-  std::optional<PolygonSet> free;
-  // The larger locators apart: a trapezoidal map's object alone is ~230 bytes, on every slice.
-  std::variant<std::monostate, Walk, std::unique_ptr<Trapezoid>, std::unique_ptr<Landmarks>>
-      locator;
-  // Auto: the walk answers until kUpgradeAfter queries, then a trapezoidal map takes over.
-  static constexpr size_t kUpgradeAfter = 600;
-  bool autoUpgrade = false;
-  std::atomic<size_t> queries{0};
-  std::once_flag upgradeOnce;
-  std::unique_ptr<Trapezoid> upgraded;
-  std::atomic<bool> upgradedReady{false};
-  std::unordered_map<const void*, int> faceIndex;
-  std::vector<std::vector<Ring>> cells;
-  std::vector<double> areas;
-  std::vector<std::vector<Box>> ringBoxes;  // per cell, per ring (outer boundary first)
-  // An overlay drops its exact arrangement once its cells are indexed: the arrangement is most
-  // of its memory (a two-robot run: 728 MB with it, 155 MB without, same slices), and the point
-  // location in doubles answers most queries. An exact query rebuilds it from these.
-  std::shared_ptr<Impl> rebuildBase;
-  std::shared_ptr<const std::vector<MovedShape>> rebuildObstacles;
-  std::mutex rebuildMutex;
+  struct Cell {
+    std::vector<Ring> rings;  // outer boundary first
+    std::vector<Box> boxes;   // per ring
+    double area = 0;
+  };
+  // Shared with the base slice where an overlay's cell is the base's unchanged: two thirds of
+  // the cells on a two-robot run (42 % of their vertices).
+  std::vector<std::shared_ptr<const Cell>> cells;
+
+  // The exact arrangement and what answers on it. An overlay drops all of it once its cells are
+  // indexed: the arrangement is most of its memory (a two-robot run: 728 MB with it, 155 MB
+  // without, same slices), and the point location in doubles answers most queries. An exact
+  // query rebuilds it from `rebuild`.
+  struct Exact {
+    PolygonSet free;
+    // The larger locators apart: a trapezoidal map's object alone is ~230 bytes.
+    std::variant<std::monostate, Walk, std::unique_ptr<Trapezoid>, std::unique_ptr<Landmarks>>
+        locator;
+    std::unordered_map<const void*, int> faceIndex;
+    std::atomic<size_t> queries{0};
+    std::once_flag upgradeOnce;
+    std::unique_ptr<Trapezoid> upgraded;
+    std::atomic<bool> upgradedReady{false};
+    // On a base slice: sums of moved shapes with neg at the origin, by (shape, angle).
+    std::mutex sumsMutex;
+    std::map<std::pair<size_t, double>, std::shared_ptr<const PolygonWithHoles>> movedSums;
+  };
+  std::unique_ptr<Exact> exactPart;  // none where the robot does not fit, or dropped
+  struct Rebuild {
+    std::shared_ptr<Impl> base;
+    std::shared_ptr<const std::vector<MovedShape>> obstacles;
+    std::mutex mutex;
+  };
+  std::unique_ptr<Rebuild> rebuild;  // on an overlay that dropped `exactPart`
   std::atomic<bool> exactReady{true};
-  // On a base slice: sums of moved shapes with neg at the origin, by (shape, angle).
-  std::mutex sumsMutex;
-  std::map<std::pair<size_t, double>, std::shared_ptr<const PolygonWithHoles>> movedSums;
 
   std::vector<PolygonWithHoles> heldSums(const std::vector<MovedShape>& shapes);
 
   const PolygonWithHoles& movedSum(const MovedShape& m) {
+    Exact& ex = *exactPart;
     const std::pair<size_t, double> key{m.shape, m.angle};
     {
-      std::lock_guard lock(sumsMutex);
-      if (auto it = movedSums.find(key); it != movedSums.end()) return *it->second;
+      std::lock_guard lock(ex.sumsMutex);
+      if (auto it = ex.movedSums.find(key); it != ex.movedSums.end()) return *it->second;
     }
     // Built outside the lock: two threads may both build it; the first one stored is kept.
     Polygon turned = exact::toExact(m.turned);
     if (turned.is_clockwise_oriented()) turned.reverse_orientation();
     auto sum = std::make_shared<const PolygonWithHoles>(
         minkowskiSum(turned, turned.is_convex(), neg, negConvex));
-    std::lock_guard lock(sumsMutex);
-    return *movedSums.emplace(key, std::move(sum)).first->second;
+    std::lock_guard lock(ex.sumsMutex);
+    return *ex.movedSums.emplace(key, std::move(sum)).first->second;
   }
 };
 
@@ -229,9 +243,10 @@ void subtractUnion(PolygonSet& free, const std::vector<PolygonWithHoles>& sums) 
 }  // namespace
 
 // Cells are the arrangement's contained faces; the locator answers queries on them.
-void Slice::index(PointLocation strategy) {
+void Slice::index(PointLocation strategy, const Impl* base) {
   Impl& im = *impl_;
-  const Arrangement& arr = im.free->arrangement();
+  Impl::Exact& ex = *im.exactPart;
+  const Arrangement& arr = ex.free.arrangement();
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
     if (!f->contained() || f->is_unbounded()) continue;
     std::vector<Ring> rings;
@@ -239,29 +254,38 @@ void Slice::index(PointLocation strategy) {
     rings.push_back(ccbRing(f->outer_ccb()));
     for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h)
       rings.push_back(ccbRing(*h));
-    im.faceIndex[&*f] = int(im.cells.size());
-    im.areas.push_back(ringsArea(rings));
-    std::vector<Box>& boxes = im.ringBoxes.emplace_back();
-    boxes.reserve(rings.size());
-    for (const Ring& r : rings) boxes.push_back(boundingBox(r));
-    im.cells.push_back(std::move(rings));
+    ex.faceIndex[&*f] = int(im.cells.size());
+    std::shared_ptr<const Impl::Cell> same;
+    if (base)
+      for (const auto& c : base->cells)
+        if (c->rings == rings) {
+          same = c;
+          break;
+        }
+    if (!same) {
+      Impl::Cell cell;
+      cell.area = ringsArea(rings);
+      cell.boxes.reserve(rings.size());
+      for (const Ring& r : rings) cell.boxes.push_back(boundingBox(r));
+      cell.rings = std::move(rings);
+      same = std::make_shared<const Impl::Cell>(std::move(cell));
+    }
+    im.cells.push_back(std::move(same));
   }
   im.cells.shrink_to_fit();
-  im.areas.shrink_to_fit();
-  im.ringBoxes.shrink_to_fit();
   switch (strategy) {
     case PointLocation::Auto:
       im.autoUpgrade = true;
-      im.locator.emplace<Walk>(arr);
+      ex.locator.emplace<Walk>(arr);
       break;
     case PointLocation::Walk:
-      im.locator.emplace<Walk>(arr);
+      ex.locator.emplace<Walk>(arr);
       break;
     case PointLocation::Trapezoid:
-      im.locator = std::make_unique<Trapezoid>(arr);
+      ex.locator = std::make_unique<Trapezoid>(arr);
       break;
     case PointLocation::Landmarks:
-      im.locator = std::make_unique<Landmarks>(arr);
+      ex.locator = std::make_unique<Landmarks>(arr);
       break;
   }
 }
@@ -306,17 +330,17 @@ Slice::Slice(const Slice& base, std::shared_ptr<const std::vector<MovedShape>> e
   im->negConvex = b.negConvex;
   im->negBox = b.negBox;
   im->regionBox = b.regionBox;
-  im->free = b.free;
-  subtractUnion(*im->free, sums);
+  im->exactPart = std::make_unique<Impl::Exact>();
+  im->exactPart->free = b.exactPart->free;
+  subtractUnion(im->exactPart->free, sums);
   impl_ = std::move(im);
-  index(strategy);
+  index(strategy, &b);
   if (strategy != PointLocation::Auto) return;  // the other strategies answer exactly only
   Impl& o = *impl_;
-  o.rebuildBase = base.impl_;
-  o.rebuildObstacles = std::move(extraObstacles);
-  o.locator.emplace<std::monostate>();
-  std::unordered_map<const void*, int>().swap(o.faceIndex);  // clear() would keep its buckets
-  o.free.reset();
+  o.rebuild = std::make_unique<Impl::Rebuild>();
+  o.rebuild->base = base.impl_;
+  o.rebuild->obstacles = std::move(extraObstacles);
+  o.exactPart.reset();
   o.exactReady.store(false, std::memory_order_release);
 }
 
@@ -324,25 +348,27 @@ Slice::Slice(const Slice& base, std::shared_ptr<const std::vector<MovedShape>> e
 // same exact input give the same faces in the same order, which is checked against the cells.
 void Slice::rebuildExact(Impl& im) {
   if (im.exactReady.load(std::memory_order_acquire)) return;
-  const std::lock_guard lock(im.rebuildMutex);
+  const std::lock_guard lock(im.rebuild->mutex);
   if (im.exactReady.load(std::memory_order_relaxed)) return;
-  Impl& b = *im.rebuildBase;
-  const std::vector<PolygonWithHoles> sums = b.heldSums(*im.rebuildObstacles);
-  im.free = b.free;
-  subtractUnion(*im.free, sums);
-  const Arrangement& arr = im.free->arrangement();
-  std::unordered_map<const void*, int> faceIndex;
+  Impl& b = *im.rebuild->base;
+  rebuildExact(b);  // kept once rebuilt for an overlay of it
+  const std::vector<PolygonWithHoles> sums = b.heldSums(*im.rebuild->obstacles);
+  auto ex = std::make_unique<Impl::Exact>();
+  ex->free = b.exactPart->free;
+  subtractUnion(ex->free, sums);
+  const Arrangement& arr = ex->free.arrangement();
+  std::unordered_map<const void*, int>& faceIndex = ex->faceIndex;
   size_t k = 0;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
     if (!f->contained() || f->is_unbounded()) continue;
     // A face that is not the cell indexed in its place is left out: locate() then answers -1
     // there (no cell), which planners treat as a point to skip, never as a wrong cell.
-    if (k < im.cells.size() && ccbRing(f->outer_ccb()) == im.cells[k].front())
+    if (k < im.cells.size() && ccbRing(f->outer_ccb()) == im.cells[k]->rings.front())
       faceIndex[&*f] = int(k);
     ++k;
   }
-  im.faceIndex = std::move(faceIndex);
-  im.locator.emplace<Walk>(arr);
+  ex->locator.emplace<Walk>(arr);
+  im.exactPart = std::move(ex);
   im.exactReady.store(true, std::memory_order_release);
 }
 
@@ -382,8 +408,9 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
   std::vector<PolygonWithHoles> sums;
   try {
     reachingSums(w, neg, w.robotConvex, impl_->negBox, impl_->regionBox, sums);
-    impl_->free.emplace(region);
-    if (!sums.empty()) subtractUnion(*impl_->free, sums);
+    impl_->exactPart = std::make_unique<Impl::Exact>();
+    impl_->exactPart->free = PolygonSet(region);
+    if (!sums.empty()) subtractUnion(impl_->exactPart->free, sums);
   } catch (const Stopped&) {
     freeLaterMoved(sums);
     freeLater(std::move(impl_));
@@ -413,7 +440,7 @@ Slice::Slice(const Slice& carrier, const Slice& attached, Vec2 offset, PointLoca
     return out;
   };
   std::vector<PolygonWithHoles> faces;
-  attached.impl_->free->polygons_with_holes(std::back_inserter(faces));
+  attached.impl_->exactPart->free.polygons_with_holes(std::back_inserter(faces));
   std::vector<PolygonWithHoles> movedFaces;
   for (const PolygonWithHoles& f : faces) {
     PolygonWithHoles m(move(f.outer_boundary()));
@@ -423,8 +450,9 @@ Slice::Slice(const Slice& carrier, const Slice& attached, Vec2 offset, PointLoca
   // An aggregated join: faces of a polygon set may touch at vertices, which insert() forbids.
   PolygonSet moved;
   moved.join(movedFaces.begin(), movedFaces.end());
-  impl_->free = c.free;
-  impl_->free->intersection(moved);
+  impl_->exactPart = std::make_unique<Impl::Exact>();
+  impl_->exactPart->free = c.exactPart->free;
+  impl_->exactPart->free.intersection(moved);
   index(strategy);
 }
 
@@ -433,8 +461,8 @@ Slice::Slice(Slice&&) noexcept = default;
 Slice& Slice::operator=(Slice&&) noexcept = default;
 
 size_t Slice::fscCount() const { return impl_->cells.size(); }
-const std::vector<Ring>& Slice::cell(size_t i) const { return impl_->cells[i]; }
-double Slice::area(size_t i) const { return impl_->areas[i]; }
+const std::vector<Ring>& Slice::cell(size_t i) const { return impl_->cells[i]->rings; }
+double Slice::area(size_t i) const { return impl_->cells[i]->area; }
 
 namespace {
 
@@ -471,8 +499,8 @@ std::optional<int> Slice::locateInDoubles(Vec2 p) const {
   size_t scanned = 0;
   int found = -1;
   for (size_t i = 0; i < im.cells.size(); ++i) {
-    const std::vector<Ring>& rings = im.cells[i];
-    const std::vector<Box>& boxes = im.ringBoxes[i];
+    const std::vector<Ring>& rings = im.cells[i]->rings;
+    const std::vector<Box>& boxes = im.cells[i]->boxes;
     bool in = true;  // inside the outer boundary and outside the holes seen so far
     for (size_t k = 0; k < rings.size() && in; ++k) {
       if (!boxes[k].overlaps(near)) {
@@ -496,23 +524,24 @@ int Slice::locate(Vec2 p) const {
   if (impl_->autoUpgrade)
     if (const auto fast = locateInDoubles(p)) return *fast;
   rebuildExact(*impl_);
+  Impl::Exact& ex = *impl_->exactPart;
   const Point q = exact::toExact(p);
   int result = -1;
   auto answer = [&](const auto& obj) {
     if (const auto* f = boost::get<Arrangement::Face_const_handle>(&obj)) {
-      auto it = impl_->faceIndex.find(&**f);
-      if (it != impl_->faceIndex.end()) result = it->second;
+      auto it = ex.faceIndex.find(&**f);
+      if (it != ex.faceIndex.end()) result = it->second;
     }
   };
   if (impl_->autoUpgrade) {
-    if (impl_->queries.fetch_add(1, std::memory_order_relaxed) + 1 >= Impl::kUpgradeAfter) {
-      std::call_once(impl_->upgradeOnce, [&] {
-        impl_->upgraded = std::make_unique<Trapezoid>(impl_->free->arrangement());
-        impl_->upgradedReady.store(true, std::memory_order_release);
+    if (ex.queries.fetch_add(1, std::memory_order_relaxed) + 1 >= Impl::kUpgradeAfter) {
+      std::call_once(ex.upgradeOnce, [&] {
+        ex.upgraded = std::make_unique<Trapezoid>(ex.free.arrangement());
+        ex.upgradedReady.store(true, std::memory_order_release);
       });
     }
-    if (impl_->upgradedReady.load(std::memory_order_acquire)) {
-      answer(impl_->upgraded->locate(q));
+    if (ex.upgradedReady.load(std::memory_order_acquire)) {
+      answer(ex.upgraded->locate(q));
       return result;
     }
   }
@@ -524,7 +553,7 @@ int Slice::locate(Vec2 p) const {
         else if constexpr (!std::is_same_v<T, std::monostate>)
           answer(pl->locate(q));
       },
-      impl_->locator);
+      ex.locator);
   return result;
 }
 

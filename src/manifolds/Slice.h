@@ -89,7 +89,8 @@ class Slice {
 
  private:
   struct Impl;
-  void index(PointLocation strategy);
+  /// Indexes the arrangement's cells; those equal to a cell of `base` share its storage.
+  void index(PointLocation strategy, const Impl* base = nullptr);
   static void rebuildExact(Impl& im);
   std::optional<int> locateInDoubles(Vec2 p) const;
   std::shared_ptr<Impl> impl_;
