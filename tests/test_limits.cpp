@@ -186,6 +186,23 @@ TEST(Limits, AFullRunOnAnUnsolvableSceneStaysUnderAGigabyte) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// Two robots on a scene without a solution build overlay slices as long as they run (one robot
+// held, the other's slice minus its sum): 1.6 KB a slice, about 700 MB after the default 60 s.
+// 20 s under 768 MB (here: about 280 MB, and 300 MB is too little) leaves a machine twice as
+// fast its margin; at the 20 KB a slice overlays took with their arrangements it would need 3 GB.
+TEST(Limits, TwoRobotsOnAnUnsolvableSceneStayLean) {
+  if (test::kSanitized) return;  // the sanitizers reserve terabytes: no cap on address space
+  test::TempDir dir;
+  const std::string scene = dir.path("s.json"), out = dir.path("path.json");
+  ASSERT_EQ(test::runMms("scenario random --seed 8 --robots 2 -o " + test::quote(scene)).code, 0);
+  const test::Outcome r =
+      test::runMms("plan " + test::quote(scene) + " --time-limit 20 --memory-limit 768 -q -o " +
+                   test::quote(out));
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_EQ(r.err.find("out of memory"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 // The default planner runs a second thread; where memory runs out there, the run still ends
 // with the one-line message and exit 3 (glibc once aborted: the library a second thread's
 // unwinding needs could no longer be loaded).
