@@ -34,6 +34,10 @@ TEST(CliInput, NegativeSeedAndNonNumericLimitsAreRefusedPlainly) {
   EXPECT_EQ(abc.err.find("not in range"), std::string::npos) << abc.err;
   EXPECT_NE(abc.err.find("--time-limit: 'abc' is not a number"), std::string::npos) << abc.err;
   EXPECT_EQ(lines(abc.err), 1u);
+  // An option checked by range alone says the same of text that is no number.
+  const test::Outcome robots = run("scenario random --robots abc -o " + test::quote(dir.path("r")));
+  EXPECT_EQ(robots.code, 2);
+  EXPECT_NE(robots.err.find("--robots: 'abc' is not a number"), std::string::npos) << robots.err;
   // plan and bench take the same limits.
   for (const std::string& cmd :
        std::vector<std::string>{"plan " + test::quote(scene), "bench " + test::quote(scene)}) {

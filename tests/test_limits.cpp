@@ -72,13 +72,14 @@ TEST(Limits, WhatALimitCutIsFreedWhenTheNextRunStarts) {
   const auto planner = makePlanner("mms", scene);
   EXPECT_FALSE(planner->solve(Termination(0.05)).found());
   EXPECT_GT(deferredCount(), 0u);  // the first slice among 1000 obstacles takes about 1 s
-  bool freed = false;
-  freeLater(std::shared_ptr<const int>(new int(0), [&freed](const int* p) {
-    freed = true;
+  // The flag outlives the planner: a regression then fails here, not in a dangling write.
+  const auto freed = std::make_shared<bool>(false);
+  freeLater(std::shared_ptr<const int>(new int(0), [freed](const int* p) {
+    *freed = true;
     delete p;
   }));
   EXPECT_FALSE(planner->solve(Termination(0.05)).found());
-  EXPECT_TRUE(freed);
+  EXPECT_TRUE(*freed);
   EXPECT_GT(deferredCount(), 0u);  // the second run's own cut slice, freed with the planner
 }
 

@@ -17,10 +17,18 @@
 
 namespace {
 
-// CLI11's "Failed parsing abc as a FLOAT" in the wording of the scene readers' errors.
+// CLI11's "Failed parsing abc as a FLOAT" (and a range check's "Value abc not in range 1 to
+// 16" for text that is no number at all) in the wording of the scene readers' errors.
 std::string parseErrorLine(const CLI::ParseError& e) {
-  static const std::regex kConversion("Failed parsing (.*) as a (FLOAT|INT|UINT|NUMBER)");
-  return std::regex_replace(mms::oneLine(e.what()), kConversion, "'$1' is not a number");
+  static const std::regex kConversion("Failed parsing (.*) as a (FLOAT|INT|UINT)");
+  static const std::regex kRange("Value (.*) not in range .*");
+  std::string line =
+      std::regex_replace(mms::oneLine(e.what()), kConversion, "'$1' is not a number");
+  std::smatch m;
+  double value = 0;
+  if (std::regex_search(line, m, kRange) && !CLI::detail::lexical_cast(m[1].str(), value))
+    line = m.prefix().str() + "'" + m[1].str() + "' is not a number";
+  return line;
 }
 
 // --memory-limit: 0 (none) or a cap large enough for the program itself to start.

@@ -320,7 +320,7 @@ Slice::Slice(const Slice& base, const std::vector<MovedShape>& extraObstacles,
 Slice::Slice(const Slice& base, std::shared_ptr<const std::vector<MovedShape>> extraObstacles,
              PointLocation strategy)
     : impl_(base.impl_), angle_(base.angle_), theta_(base.theta_) {
-  if (base.impl_->cells.empty() || extraObstacles->empty()) return;
+  if (base.impl_->cells.empty() || !extraObstacles || extraObstacles->empty()) return;
   Impl& b = *base.impl_;
   rebuildExact(b);  // a base keeps its arrangement; this only guards the assumption
   std::vector<PolygonWithHoles> sums = b.heldSums(*extraObstacles);

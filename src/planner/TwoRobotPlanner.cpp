@@ -158,7 +158,14 @@ void TwoRobotPlanner::addOverlays(
       });
     }
     for (size_t i = 0; i < n; ++i) {
-      if (errors[i]) std::rethrow_exception(errors[i]);
+      if (errors[i]) {
+        try {
+          std::rethrow_exception(errors[i]);
+        } catch (const Stopped&) {
+          freeLaterMoved(built);  // the batch's finished overlays (util/Deferred.h)
+          throw;
+        }
+      }
       item(done + i).first->addOverlay(std::move(*built[i]));
     }
     done += n;
