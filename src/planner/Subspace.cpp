@@ -37,15 +37,7 @@ void buildSlices(const SliceWorld& world, const std::vector<double>& thetas, uns
       });
     }
     for (size_t i = 0; i < n; ++i) {
-      if (errors[i]) {
-        try {
-          std::rethrow_exception(errors[i]);
-        } catch (const Stopped&) {
-          // The batch's finished slices would be freed past the limit (util/Deferred.h).
-          freeLaterMoved(built);
-          throw;
-        }
-      }
+      if (errors[i]) rethrowDeferring(errors[i], built);
       add(std::move(*built[i]));
     }
     done += n;

@@ -158,14 +158,7 @@ void TwoRobotPlanner::addOverlays(
       });
     }
     for (size_t i = 0; i < n; ++i) {
-      if (errors[i]) {
-        try {
-          std::rethrow_exception(errors[i]);
-        } catch (const Stopped&) {
-          freeLaterMoved(built);  // the batch's finished overlays (util/Deferred.h)
-          throw;
-        }
-      }
+      if (errors[i]) rethrowDeferring(errors[i], built);
       item(done + i).first->addOverlay(std::move(*built[i]));
     }
     done += n;
@@ -207,14 +200,7 @@ void TwoRobotPlanner::sliceNarrowArcs(Subspace& sub) {
     });
   }
   for (size_t i = 0; i < middles.size(); ++i) {
-    if (errors[i]) {
-      try {
-        std::rethrow_exception(errors[i]);
-      } catch (const Stopped&) {
-        freeLaterMoved(built);  // the batch's finished slices (util/Deferred.h)
-        throw;
-      }
-    }
+    if (errors[i]) rethrowDeferring(errors[i], built);
     sub.addLocalOverlay(std::move(*built[i]));
   }
 }

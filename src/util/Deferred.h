@@ -7,7 +7,10 @@
 // memory back at once). So at most the unfinished manifolds of the runs since the last start
 // are kept: one per thread of each.
 #include <cstddef>
+#include <exception>
 #include <memory>
+
+#include "mms/Termination.h"
 
 namespace mms {
 
@@ -22,6 +25,18 @@ void freeLaterMoved(T& value) noexcept {
   try {
     freeLater(std::make_shared<T>(std::move(value)));
   } catch (...) {
+  }
+}
+
+/// Rethrows a parallel batch's `error`; when the limit stopped it, the batch's finished results
+/// go to the garbage first instead of being freed past the limit.
+template <class T>
+[[noreturn]] void rethrowDeferring(const std::exception_ptr& error, T& batch) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const Stopped&) {
+    freeLaterMoved(batch);
+    throw;
   }
 }
 
