@@ -31,15 +31,20 @@ const Scene& referenceScene() {
   return s;
 }
 
-void BM_Slice(benchmark::State& state) {
-  const SliceWorld world(referenceScene(), 0);
+// Slices of robot 0 of `scene` at random angles, one an iteration; their cells a slice.
+double sliceLoop(benchmark::State& state, const Scene& scene) {
+  const SliceWorld world(scene, 0);
   Random rng(1);
   size_t cells = 0;
   for (auto _ : state) {
     const Slice s(world, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
     cells += s.fscCount();
   }
-  state.counters["cells"] = double(cells) / double(state.iterations());
+  return double(cells) / double(state.iterations());
+}
+
+void BM_Slice(benchmark::State& state) {
+  state.counters["cells"] = sliceLoop(state, referenceScene());
 }
 BENCHMARK(BM_Slice)->Unit(benchmark::kMillisecond);
 
@@ -50,14 +55,7 @@ const Scene& nicheScene() {
   return s;
 }
 
-void BM_SliceSmall(benchmark::State& state) {
-  const SliceWorld world(nicheScene(), 0);
-  Random rng(1);
-  for (auto _ : state) {
-    const Slice s(world, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
-    benchmark::DoNotOptimize(s.fscCount());
-  }
-}
+void BM_SliceSmall(benchmark::State& state) { sliceLoop(state, nicheScene()); }
 BENCHMARK(BM_SliceSmall)->Unit(benchmark::kMicrosecond);
 
 // The same with each robot replaced by its convex hull: what the reduced convolution of a
@@ -65,12 +63,7 @@ BENCHMARK(BM_SliceSmall)->Unit(benchmark::kMicrosecond);
 void BM_SliceSmallHull(benchmark::State& state) {
   Scene sc = nicheScene();
   for (Robot& r : sc.robots) r.shape = exact::convexHull(r.shape);
-  const SliceWorld world(sc, 0);
-  Random rng(1);
-  for (auto _ : state) {
-    const Slice s(world, exact::rationalAngleNear(rng.uniform(-M_PI, M_PI), 30));
-    benchmark::DoNotOptimize(s.fscCount());
-  }
+  sliceLoop(state, sc);
 }
 BENCHMARK(BM_SliceSmallHull)->Unit(benchmark::kMicrosecond);
 

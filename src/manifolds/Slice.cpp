@@ -142,6 +142,9 @@ struct Slice::Impl {
   std::atomic<bool> exactReady{true};
 
   std::vector<PolygonWithHoles> heldSums(const std::vector<MovedShape>& shapes);
+  // An overlay's exact part: this (base) slice's free space minus `sums`. The constructor and
+  // the rebuild both make it here, so the rebuild's faces come out as the constructor's did.
+  std::unique_ptr<Exact> exactWithout(const std::vector<PolygonWithHoles>& sums) const;
 
   const PolygonWithHoles& movedSum(const MovedShape& m) {
     Exact& ex = *exactPart;
@@ -242,6 +245,14 @@ void subtractUnion(PolygonSet& free, const std::vector<PolygonWithHoles>& sums) 
 
 }  // namespace
 
+std::unique_ptr<Slice::Impl::Exact> Slice::Impl::exactWithout(
+    const std::vector<PolygonWithHoles>& sums) const {
+  auto ex = std::make_unique<Exact>();
+  ex->free = exactPart->free;
+  subtractUnion(ex->free, sums);
+  return ex;
+}
+
 // Cells are the arrangement's contained faces; the locator answers queries on them.
 void Slice::index(PointLocation strategy, const Impl* base) {
   Impl& im = *impl_;
@@ -330,9 +341,7 @@ Slice::Slice(const Slice& base, std::shared_ptr<const std::vector<MovedShape>> e
   im->negConvex = b.negConvex;
   im->negBox = b.negBox;
   im->regionBox = b.regionBox;
-  im->exactPart = std::make_unique<Impl::Exact>();
-  im->exactPart->free = b.exactPart->free;
-  subtractUnion(im->exactPart->free, sums);
+  im->exactPart = b.exactWithout(sums);
   impl_ = std::move(im);
   index(strategy, &b);
   if (strategy != PointLocation::Auto) return;  // the other strategies answer exactly only
@@ -353,9 +362,7 @@ void Slice::rebuildExact(Impl& im) {
   Impl& b = *im.rebuild->base;
   rebuildExact(b);  // kept once rebuilt for an overlay of it
   const std::vector<PolygonWithHoles> sums = b.heldSums(*im.rebuild->obstacles);
-  auto ex = std::make_unique<Impl::Exact>();
-  ex->free = b.exactPart->free;
-  subtractUnion(ex->free, sums);
+  std::unique_ptr<Impl::Exact> ex = b.exactWithout(sums);
   const Arrangement& arr = ex->free.arrangement();
   std::unordered_map<const void*, int>& faceIndex = ex->faceIndex;
   size_t k = 0;
