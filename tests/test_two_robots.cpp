@@ -199,3 +199,95 @@ TEST(Scenarios, PacmanSquareGrowsWithTightnessAndBadValuesAreRejected) {
   EXPECT_EQ(bad.code, 2);
   EXPECT_FALSE(std::filesystem::exists(dir.path("x.json")));
 }
+
+namespace {
+
+// The free interval around theta of `free` at p, sampled in steps of `step` out to `reach` on
+// each side: its width, or 2 pi when it reaches that far both ways.
+double sampledFreeWidth(const std::function<bool(const Pose&)>& free, Vec2 p, double theta,
+                        double step, double reach) {
+  double lo = 0, hi = 0;
+  while (lo < reach && free({p.x, p.y, theta - lo - step})) lo += step;
+  while (hi < reach && free({p.x, p.y, theta + hi + step})) hi += step;
+  return lo >= reach && hi >= reach ? 2 * M_PI : lo + hi;
+}
+
+struct NarrowArcs {
+  size_t narrow = 0;            // arcs narrower than the spacing, met by no angle
+  std::vector<double> middles;  // of those, the ones narrowArcMiddles chose
+  // (line point, arc middle) of the chosen ones and of those left out though no chosen middle
+  // meets them
+  std::vector<std::pair<Vec2, double>> chosen, skipped;
+};
+
+// A subspace of robot `moving` with the other robot held at its start, `count` lines at random
+// points within `spread` of the held robot, and the middles chosen among its narrow arcs.
+NarrowArcs narrowArcsOf(const Scene& scene, size_t moving, size_t count, double spread,
+                        double spacing) {
+  const CollisionChecker checker(scene);
+  const Scene contact = withContactShapes(scene, checker);
+  Roadmap roadmap;
+  SubspaceStats stats;
+  const size_t held = 1 - moving;
+  const Pose at = scene.robots[held].start;
+  Subspace sub(0, contact, checker, moving, {{held, at}}, roadmap, stats);
+  Random rng(7);
+  for (size_t i = 0; i < count; ++i)
+    sub.addLine({at.x + rng.uniform(-spread, spread), at.y + rng.uniform(-spread, spread)});
+  const LineWorld alone(contact, moving);
+  const PoseTest amongObstacles = [&](const Pose& q) { return checker.robotFree(moving, q); };
+  NarrowArcs out;
+  out.middles = narrowArcMiddles(sub.lines(), alone, amongObstacles, {}, spacing, count * 8);
+  for (const Line& line : sub.lines())
+    for (const Arc& a : line.arcs()) {
+      if (a.full() || a.hi - a.lo >= spacing) continue;
+      ++out.narrow;
+      const double m = 0.5 * (a.lo + a.hi);
+      if (std::any_of(out.middles.begin(), out.middles.end(),
+                      [&](double c) { return std::abs(c - m) < 1e-12; }))
+        out.chosen.push_back({line.point(), m});
+      else if (std::none_of(out.middles.begin(), out.middles.end(),
+                            [&](double c) { return a.contains(c); }))
+        out.skipped.push_back({line.point(), m});  // not met by a middle chosen elsewhere
+    }
+  return out;
+}
+
+}  // namespace
+
+// Narrow-arc slices are for rotation passages the held robot makes. Checked against sampling
+// with the collision checker at each line's point: every chosen middle lies in an interval
+// narrower than the spacing with the other robot held, and in a wider one among the obstacles
+// alone; every arc left out is as narrow among the obstacles alone. The Pacman held at its start
+// makes such arcs for the square; the walls of a niche corridor make arcs that are left out.
+TEST(TwoRobots, NarrowArcSlicesOnlyWhereTheHeldRobotMakesTheArcNarrow) {
+  const double spacing = 2 * M_PI / 17, step = 1e-4, margin = 2e-3;
+  struct Case {
+    Scene scene;
+    size_t moving;
+    double spread;
+  };
+  size_t chosen = 0, skipped = 0;
+  for (const Case& c : {Case{pacmanScene(0.98), 1, 1.5}, Case{pacmanScene(0.9), 1, 1.5},
+                        Case{nicheSwapScene(1), 0, 4}, Case{nicheSwapScene(2, 0.5), 1, 4}}) {
+    const CollisionChecker checker(c.scene);
+    const size_t held = 1 - c.moving;
+    const Pose at = c.scene.robots[held].start;
+    auto withHeld = [&](const Pose& q) {
+      return checker.robotFree(c.moving, q) && checker.robotsDisjoint(c.moving, q, held, at);
+    };
+    auto alone = [&](const Pose& q) { return checker.robotFree(c.moving, q); };
+    const NarrowArcs arcs = narrowArcsOf(c.scene, c.moving, 400, c.spread, spacing);
+    EXPECT_EQ(arcs.chosen.size(), arcs.middles.size());
+    for (const auto& [p, m] : arcs.chosen) {
+      EXPECT_LT(sampledFreeWidth(withHeld, p, m, step, spacing), spacing + margin);
+      EXPECT_GT(sampledFreeWidth(alone, p, m, step, spacing), spacing - margin);
+    }
+    for (const auto& [p, m] : arcs.skipped)
+      EXPECT_LT(sampledFreeWidth(alone, p, m, step, spacing), spacing + margin);
+    chosen += arcs.chosen.size();
+    skipped += arcs.skipped.size();
+  }
+  EXPECT_GT(chosen, 0u);
+  EXPECT_GT(skipped, 0u);
+}

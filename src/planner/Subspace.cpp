@@ -1,5 +1,8 @@
 #include "planner/Subspace.h"
 
+#include <algorithm>
+#include <optional>
+
 #include "mms/Termination.h"
 #include "util/Deferred.h"
 #include "util/Parallel.h"
@@ -63,6 +66,29 @@ Vec2 subspaceLinePoint(const std::vector<Slice>& base, const Box& b, Random& rng
       if (base[rng.below(base.size())].locate(p) >= 0) return p;
     }
   return uniform();
+}
+
+std::vector<double> narrowArcMiddles(const std::vector<Line>& lines, const LineWorld& alone,
+                                     const PoseTest& amongObstacles, std::vector<double> met,
+                                     double spacing, size_t limit) {
+  std::vector<double> middles;
+  for (const Line& line : lines) {
+    std::optional<Line> bare;  // the line among the obstacles alone, made for its first arc
+    for (const Arc& a : line.arcs()) {
+      if (middles.size() >= limit) return middles;
+      if (a.full() || a.hi - a.lo >= spacing) continue;
+      if (std::any_of(met.begin(), met.end(), [&](double t) { return a.contains(t); })) continue;
+      const double middle = 0.5 * (a.lo + a.hi);
+      if (!bare) bare.emplace(alone, amongObstacles, line.point());
+      const int k = bare->arcContaining(middle);
+      if (k < 0) continue;  // within a hair of a contact the two tests disagree: nothing to open
+      const Arc& own = bare->arcs()[size_t(k)];
+      if (!own.full() && own.hi - own.lo < spacing) continue;  // the obstacles' own arc
+      middles.push_back(middle);
+      met.push_back(middle);
+    }
+  }
+  return middles;
 }
 
 Scene withContactShapes(const Scene& scene, const CollisionChecker& checker) {

@@ -87,6 +87,17 @@ bool cutsNoPassage(const Slice& base, const MovedShape& held);
 /// the rest uniform in `bounds`.
 Vec2 subspaceLinePoint(const std::vector<Slice>& base, const Box& bounds, Random& rng);
 
+/// Middles of free arcs of `lines` (a subspace's, with a robot held) that are narrower than
+/// `spacing` and contain none of the angles `met` nor an earlier middle: rotation passages the
+/// shared angles miss. Only arcs the held robot makes narrow count: where the same line among
+/// the obstacles alone (`alone`, free per `amongObstacles`) has an arc as narrow, the arc is
+/// the obstacles' own, the same in every subspace, and the shared angles, which double every
+/// round, reach it; a local slice in each subspace would pay for it again and again (in a
+/// corridor, most short arcs are the walls'). At most `limit` middles, in line and arc order.
+std::vector<double> narrowArcMiddles(const std::vector<Line>& lines, const LineWorld& alone,
+                                     const PoseTest& amongObstacles, std::vector<double> met,
+                                     double spacing, size_t limit);
+
 class Subspace {
  public:
   /// Robot `moving` of `scene` moves; each (robot, pose) in `held` stays put as an obstacle.

@@ -31,6 +31,7 @@ TwoRobotPlanner::TwoRobotPlanner(const Scene& scene, TwoRobotSettings settings)
   for (size_t r = 0; r < 2; ++r) {
     translates_[r] = scene_.robots[r].motion == Motion::Translate;
     worlds_[r] = std::make_unique<SliceWorld>(contactScene_, r);
+    lineWorlds_[r] = std::make_unique<LineWorld>(contactScene_, r);
     angles_[r] = std::make_unique<AngleSequence>(angleCount(r), rng_.uniform(0, 2 * M_PI));
   }
 }
@@ -165,25 +166,21 @@ void TwoRobotPlanner::addOverlays(
   }
 }
 
-// A free arc of a line narrower than the shared angles' spacing and met by none of them is a
-// rotation passage they miss: the obstacles and the held robot let the moving one through only
-// within a hair of a contact angle (the Pacman turned round so the square passes through its
-// mouth). A slice at the arc's middle, local to this subspace, opens it; at most
-// settings_.narrowSlices per subspace. Open scenes have no such arcs and pay nothing.
+// Narrow arcs the held robot makes (narrowArcMiddles): a slice at each middle, local to this
+// subspace, opens the rotation passage the shared angles miss (the Pacman turned round so the
+// square passes through its mouth); at most settings_.narrowSlices per subspace. Open scenes
+// have no such arcs and pay nothing.
 void TwoRobotPlanner::sliceNarrowArcs(Subspace& sub) {
   const size_t moving = sub.moving();
-  const double spacing = 2 * M_PI / double(base_[moving].size());
+  std::vector<double> met;
+  for (const Slice& s : base_[moving]) met.push_back(s.theta());
+  for (const Slice& s : sub.localSlices()) met.push_back(s.theta());
   std::vector<exact::RationalAngle> middles;
-  for (const Line& line : sub.lines())
-    for (const Arc& a : line.arcs()) {
-      if (middles.size() >= settings_.narrowSlices) break;
-      if (a.full() || a.hi - a.lo >= spacing) continue;
-      bool met = false;
-      for (const Slice& s : base_[moving]) met = met || a.contains(s.theta());
-      for (const Slice& s : sub.localSlices()) met = met || a.contains(s.theta());
-      for (const auto& m : middles) met = met || a.contains(m.radians());
-      if (!met) middles.push_back(exact::rationalAngleNear(0.5 * (a.lo + a.hi), 30));
-    }
+  for (const double m : narrowArcMiddles(
+           sub.lines(), *lineWorlds_[moving],
+           [&](const Pose& q) { return checker_.robotFree(moving, q); }, met,
+           2 * M_PI / double(base_[moving].size()), settings_.narrowSlices))
+    middles.push_back(exact::rationalAngleNear(m, 30));
   // Built on all threads (each a new base slice and its overlay), added in arc order.
   std::vector<std::optional<Slice>> built(middles.size());
   std::vector<std::exception_ptr> errors;

@@ -149,6 +149,7 @@ class TwoRobotPlanner : private FixingHost {
   std::unique_ptr<FixingSampler> sampler_;
   std::array<bool, 2> translates_;
   std::array<std::unique_ptr<SliceWorld>, 2> worlds_;
+  std::array<std::unique_ptr<LineWorld>, 2> lineWorlds_;  // per robot: the obstacles alone
   std::array<std::unique_ptr<AngleSequence>, 2> angles_;
   std::array<size_t, 2> sequenceAngles_{0, 0};  // base slices from angles_ (after start, goal)
   std::array<std::vector<Slice>, 2>
