@@ -149,6 +149,44 @@ TEST_P(SliceVsChecker, OverlaysMatchSlicesWithTheHeldShapeAsObstacle) {
 
 INSTANTIATE_TEST_SUITE_P(Seeds, SliceVsChecker, ::testing::Values(1, 2, 3));
 
+// A base slice keeps the sums of the last 32 convex held shapes it met (a convex pair's sum is
+// cheap to redo) and every non-convex one. Overlays built again after 40 other angles pushed
+// their sums out agree with the first ones (cells and every located point), and with a slice
+// that has the held shape as an obstacle.
+TEST(Slice, OverlaysAgreeWhetherTheirSumWasKeptOrRedone) {
+  for (const bool convex : {true, false}) {
+    const Scene s = convex ? convexScene(5) : randomScene(5);
+    const SliceWorld world(s, 0);
+    Random rng(17);
+    const exact::RationalAngle angle = exact::rationalAngleNear(0.3, 30);
+    const Slice base(world, angle);
+    std::vector<MovedShape> held;
+    for (int k = 0; k < 40; ++k) {
+      const double turn = -M_PI + 2 * M_PI * k / 40;
+      held.push_back(heldAtRandom(s, turn, placedRing(s.robots[0].shape, {0, 0, turn}), rng));
+    }
+    std::vector<Slice> first;
+    for (const MovedShape& h : held) first.emplace_back(base, std::vector<MovedShape>{h});
+    std::vector<Vec2> points;
+    for (int i = 0; i < 1000; ++i)
+      points.push_back(
+          {rng.uniform(s.bounds.xmin, s.bounds.xmax), rng.uniform(s.bounds.ymin, s.bounds.ymax)});
+    for (size_t k = 0; k < held.size(); ++k) {
+      const Slice again(base, std::vector<MovedShape>{held[k]});
+      ASSERT_EQ(again.fscCount(), first[k].fscCount()) << "convex " << convex << ", k " << k;
+      for (const Vec2 p : points)
+        ASSERT_EQ(again.locate(p), first[k].locate(p)) << "convex " << convex << ", k " << k;
+      if (k % 10 != 0) continue;
+      const SliceWorld withHeld(s, 0, {held[k].placed()});
+      const Slice reference(withHeld, angle);
+      EXPECT_EQ(again.fscCount(), reference.fscCount()) << "convex " << convex << ", k " << k;
+      for (const Vec2 p : points)
+        EXPECT_EQ(again.locate(p) < 0, reference.locate(p) < 0)
+            << "convex " << convex << ", k " << k;
+    }
+  }
+}
+
 TEST(Slice, TooLargeRobotHasNoCells) {
   Scene s = loadScene(scenario("one-robot/bar-slot.json"));
   s.bounds = {-2.9, -10, 2.9, 10};  // the 6-long bar fits only upright
