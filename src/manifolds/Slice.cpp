@@ -47,8 +47,13 @@ PolygonWithHoles minkowskiSum(const Polygon& a, bool aConvex, const Polygon& b, 
   if (!aConvex || !bConvex) return CGAL::minkowski_sum_2(a, b);
   std::vector<Point> sums;
   sums.reserve(a.size() * b.size());
-  for (const Point& p : a.vertices())
-    for (const Point& q : b.vertices()) sums.push_back(p + (q - CGAL::ORIGIN));
+  for (const Point& p : a.vertices()) {
+    const auto& ep = CGAL::exact(p);
+    for (const Point& q : b.vertices()) {
+      const auto& eq = CGAL::exact(q);
+      sums.emplace_back(Point::Rep(std::decay_t<decltype(ep)>(ep.x() + eq.x(), ep.y() + eq.y())));
+    }
+  }
   Polygon hull;
   CGAL::convex_hull_2(sums.begin(), sums.end(), std::back_inserter(hull));
   return PolygonWithHoles(hull);
@@ -342,8 +347,10 @@ std::vector<PolygonWithHoles> Slice::Impl::heldSums(const std::vector<MovedShape
     const auto dx = CGAL::exact(FT(m.offset.x)), dy = CGAL::exact(FT(m.offset.y));
     auto move = [&](const Polygon& poly) {
       Polygon out;
-      for (const Point& v : poly.vertices())
-        out.push_back(Point(FT(CGAL::exact(v.x()) + dx), FT(CGAL::exact(v.y()) + dy)));
+      for (const Point& v : poly.vertices()) {
+        const auto& e = CGAL::exact(v);
+        out.push_back(Point(Point::Rep(std::decay_t<decltype(e)>(e.x() + dx, e.y() + dy))));
+      }
       return out;
     };
     PolygonWithHoles moved(move(atOrigin.outer_boundary()));
