@@ -40,6 +40,14 @@ struct SliceWorld::Impl {
 
 namespace {
 
+// A point born exact: its exact coordinates and their intervals are stored at once, so a
+// predicate that its interval cannot decide reads the rationals instead of evaluating a lazy
+// construction (and CGAL's call_once around it) first.
+using ExactFT = Kernel::Exact_kernel::FT;
+Point exactPoint(const ExactFT& x, const ExactFT& y) {
+  return Point(Point::Rep(Kernel::Exact_kernel::Point_2(x, y)));
+}
+
 // The Minkowski sum a (+) b. Of two convex polygons it is the convex hull of the sums of their
 // vertices: exact like CGAL's reduced convolution, and several times cheaper for the few-vertex
 // convex pieces most scenes are made of.
@@ -51,7 +59,7 @@ PolygonWithHoles minkowskiSum(const Polygon& a, bool aConvex, const Polygon& b, 
     const auto& ep = CGAL::exact(p);
     for (const Point& q : b.vertices()) {
       const auto& eq = CGAL::exact(q);
-      sums.emplace_back(Point::Rep(std::decay_t<decltype(ep)>(ep.x() + eq.x(), ep.y() + eq.y())));
+      sums.push_back(exactPoint(ep.x() + eq.x(), ep.y() + eq.y()));
     }
   }
   Polygon hull;
@@ -349,7 +357,7 @@ std::vector<PolygonWithHoles> Slice::Impl::heldSums(const std::vector<MovedShape
       Polygon out;
       for (const Point& v : poly.vertices()) {
         const auto& e = CGAL::exact(v);
-        out.push_back(Point(Point::Rep(std::decay_t<decltype(e)>(e.x() + dx, e.y() + dy))));
+        out.push_back(exactPoint(e.x() + dx, e.y() + dy));
       }
       return out;
     };
@@ -418,15 +426,19 @@ void Slice::rebuildExact(Impl& im) {
 Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLocation strategy)
     : impl_(std::make_shared<Impl>()), angle_(angle), theta_(angle.radians()) {
   const SliceWorld::Impl& w = world.impl();
-  const auto [c, s] = angle.cosSin();
   // -R_theta: the robot rotated, then reflected about its reference point (a half turn, so
-  // the orientation stays counter-clockwise).
+  // the orientation stays counter-clockwise). Its vertices and the region's corners are made
+  // from exact rationals, with their intervals at hand: every sum of them is a lazy
+  // construction of two such points instead of a chain of lazy products per coordinate.
+  const auto [cosine, sine] = angle.cosSin();
+  const ExactFT &c = CGAL::exact(cosine), &s = CGAL::exact(sine);
   Polygon neg;
-  FT minX, maxX, minY, maxY;
+  ExactFT minX, maxX, minY, maxY;
   bool first = true;
   for (const Point& v : w.robot.vertices()) {
-    const FT x = c * v.x() - s * v.y(), y = s * v.x() + c * v.y();
-    neg.push_back(Point(-x, -y));
+    const auto& e = CGAL::exact(v);
+    const ExactFT x = c * e.x() - s * e.y(), y = s * e.x() + c * e.y();
+    neg.push_back(exactPoint(-x, -y));
     if (first || x < minX) minX = x;
     if (first || x > maxX) maxX = x;
     if (first || y < minY) minY = y;
@@ -434,19 +446,19 @@ Slice::Slice(const SliceWorld& world, const exact::RationalAngle& angle, PointLo
     first = false;
   }
   // Reference points that keep the rotated robot inside the bounds.
-  const FT xlo = FT(w.bounds.xmin) - minX, xhi = FT(w.bounds.xmax) - maxX;
-  const FT ylo = FT(w.bounds.ymin) - minY, yhi = FT(w.bounds.ymax) - maxY;
+  const ExactFT xlo = ExactFT(w.bounds.xmin) - minX, xhi = ExactFT(w.bounds.xmax) - maxX;
+  const ExactFT ylo = ExactFT(w.bounds.ymin) - minY, yhi = ExactFT(w.bounds.ymax) - maxY;
   if (!(xlo < xhi && ylo < yhi)) return;  // the robot does not fit at this angle
   Polygon region;
-  region.push_back(Point(xlo, ylo));
-  region.push_back(Point(xhi, ylo));
-  region.push_back(Point(xhi, yhi));
-  region.push_back(Point(xlo, yhi));
+  region.push_back(exactPoint(xlo, ylo));
+  region.push_back(exactPoint(xhi, ylo));
+  region.push_back(exactPoint(xhi, yhi));
+  region.push_back(exactPoint(xlo, yhi));
 
   impl_->neg = neg;
   impl_->negConvex = w.robotConvex;
-  impl_->regionBox = {CGAL::to_double(xlo), CGAL::to_double(ylo), CGAL::to_double(xhi),
-                      CGAL::to_double(yhi)};
+  impl_->regionBox = {CGAL::to_double(region[0].x()), CGAL::to_double(region[0].y()),
+                      CGAL::to_double(region[2].x()), CGAL::to_double(region[2].y())};
   impl_->negBox = boundingBox(exact::toDouble(neg));
   std::vector<PolygonWithHoles> sums;
   try {
@@ -478,8 +490,10 @@ Slice::Slice(const Slice& carrier, const Slice& attached, Vec2 offset, PointLoca
   const auto dx = CGAL::exact(-(cs * ox - sn * oy)), dy = CGAL::exact(-(sn * ox + cs * oy));
   auto move = [&](const Polygon& poly) {
     Polygon out;
-    for (const Point& v : poly.vertices())
-      out.push_back(Point(FT(CGAL::exact(v.x()) + dx), FT(CGAL::exact(v.y()) + dy)));
+    for (const Point& v : poly.vertices()) {
+      const auto& e = CGAL::exact(v);
+      out.push_back(exactPoint(e.x() + dx, e.y() + dy));
+    }
     return out;
   };
   std::vector<PolygonWithHoles> faces;
