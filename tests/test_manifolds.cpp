@@ -171,7 +171,9 @@ TEST(Slice, OverlaysAgreeWhetherTheirSumWasKeptOrRedone) {
     for (int i = 0; i < 1000; ++i)
       points.push_back(
           {rng.uniform(s.bounds.xmin, s.bounds.xmax), rng.uniform(s.bounds.ymin, s.bounds.ymax)});
-    for (size_t k = 0; k < held.size(); ++k) {
+    // Newest first: of a convex pair's sums the base keeps only the last 32, so held[39..8]
+    // come from the kept ring and held[7..0] are redone (in order they would all be redone).
+    for (size_t k = held.size(); k-- > 0;) {
       const Slice again(base, std::vector<MovedShape>{held[k]});
       ASSERT_EQ(again.fscCount(), first[k].fscCount()) << "convex " << convex << ", k " << k;
       for (const Vec2 p : points)

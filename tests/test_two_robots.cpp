@@ -262,14 +262,20 @@ NarrowArcs narrowArcsOf(const Scene& scene, size_t moving, size_t count, double 
 // makes such arcs for the square; the walls of a niche corridor make arcs that are left out.
 TEST(TwoRobots, NarrowArcSlicesOnlyWhereTheHeldRobotMakesTheArcNarrow) {
   const double spacing = 2 * M_PI / 17, step = 1e-4, margin = 2e-3;
+  // The Pacman's narrow arcs are its own turn past the held square: slices open them. A robot
+  // deep in a niche barely turns whether the other is near or not: those arcs are skipped.
+  enum class Expect { Opens, Skips };
   struct Case {
     Scene scene;
     size_t moving;
     double spread;
+    Expect expect;
   };
-  size_t chosen = 0, skipped = 0;
-  for (const Case& c : {Case{pacmanScene(0.98), 1, 1.5}, Case{pacmanScene(0.9), 1, 1.5},
-                        Case{nicheSwapScene(1), 0, 4}, Case{nicheSwapScene(2, 0.5), 1, 4}}) {
+  int index = 0;
+  for (const Case& c :
+       {Case{pacmanScene(0.98), 1, 1.5, Expect::Opens},
+        Case{pacmanScene(0.9), 1, 1.5, Expect::Opens}, Case{nicheSwapScene(1), 0, 4, Expect::Skips},
+        Case{nicheSwapScene(2, 0.5), 1, 4, Expect::Skips}}) {
     const CollisionChecker checker(c.scene);
     const size_t held = 1 - c.moving;
     const Pose at = c.scene.robots[held].start;
@@ -285,9 +291,10 @@ TEST(TwoRobots, NarrowArcSlicesOnlyWhereTheHeldRobotMakesTheArcNarrow) {
     }
     for (const auto& [p, m] : arcs.skipped)
       EXPECT_LT(sampledFreeWidth(alone, p, m, step, spacing), spacing + margin);
-    chosen += arcs.chosen.size();
-    skipped += arcs.skipped.size();
+    if (c.expect == Expect::Opens)
+      EXPECT_GT(arcs.chosen.size(), 0u) << "case " << index;
+    else
+      EXPECT_GT(arcs.skipped.size(), 0u) << "case " << index;
+    ++index;
   }
-  EXPECT_GT(chosen, 0u);
-  EXPECT_GT(skipped, 0u);
 }

@@ -41,8 +41,9 @@ struct SliceWorld::Impl {
 namespace {
 
 // A point born exact: its exact coordinates and their intervals are stored at once, so a
-// predicate that its interval cannot decide reads the rationals instead of evaluating a lazy
-// construction (and CGAL's call_once around it) first.
+// predicate that its interval cannot decide reads the rationals instead of first evaluating a
+// lazy construction of two lazy numbers. CGAL's call_once still runs, once per point and with
+// nothing to compute, instead of once for the point and once for each coordinate.
 using ExactFT = Kernel::Exact_kernel::FT;
 Point exactPoint(const ExactFT& x, const ExactFT& y) {
   return Point(Point::Rep(Kernel::Exact_kernel::Point_2(x, y)));
