@@ -285,12 +285,19 @@ TEST(TwoRobots, NarrowArcSlicesOnlyWhereTheHeldRobotMakesTheArcNarrow) {
     auto alone = [&](const Pose& q) { return checker.robotFree(c.moving, q); };
     const NarrowArcs arcs = narrowArcsOf(c.scene, c.moving, 400, c.spread, spacing);
     EXPECT_EQ(arcs.chosen.size(), arcs.middles.size());
+    // An arc is the obstacles' own where alone they make it narrower than the spacing and less
+    // than twice as wide.
     for (const auto& [p, m] : arcs.chosen) {
-      EXPECT_LT(sampledFreeWidth(withHeld, p, m, step, spacing), spacing + margin);
-      EXPECT_GT(sampledFreeWidth(alone, p, m, step, spacing), spacing - margin);
+      const double width = sampledFreeWidth(withHeld, p, m, step, spacing);
+      EXPECT_LT(width, spacing + margin);
+      EXPECT_GT(sampledFreeWidth(alone, p, m, step, spacing),
+                std::min(spacing, 2 * width) - 2 * margin);
     }
-    for (const auto& [p, m] : arcs.skipped)
-      EXPECT_LT(sampledFreeWidth(alone, p, m, step, spacing), spacing + margin);
+    for (const auto& [p, m] : arcs.skipped) {
+      const double width = sampledFreeWidth(withHeld, p, m, step, spacing);
+      EXPECT_LT(sampledFreeWidth(alone, p, m, step, spacing),
+                std::min(spacing, 2 * width) + 2 * margin);
+    }
     if (c.expect == Expect::Opens)
       EXPECT_GT(arcs.chosen.size(), 0u) << "case " << index;
     else

@@ -83,7 +83,8 @@ std::vector<double> narrowArcMiddles(const std::vector<Line>& lines, const LineW
       const int k = bare->arcContaining(middle);
       if (k < 0) continue;  // within a hair of a contact the two tests disagree: nothing to open
       const Arc& own = bare->arcs()[size_t(k)];
-      if (!own.full() && own.hi - own.lo < spacing) continue;  // the obstacles' own arc
+      // The obstacles' own arc: as narrow, or within one doubling of the shared angles of it.
+      if (!own.full() && own.hi - own.lo < std::min(spacing, 2 * (a.hi - a.lo))) continue;
       middles.push_back(middle);
       met.push_back(middle);
     }

@@ -90,10 +90,12 @@ Vec2 subspaceLinePoint(const std::vector<Slice>& base, const Box& bounds, Random
 /// Middles of free arcs of `lines` (a subspace's, with a robot held) that are narrower than
 /// `spacing` and contain none of the angles `met` nor an earlier middle: rotation passages the
 /// shared angles miss. Only arcs the held robot makes narrow count: where the same line among
-/// the obstacles alone (`alone`, free per `amongObstacles`) has an arc as narrow, the arc is
-/// the obstacles' own, the same in every subspace, and the shared angles, which double every
-/// round, reach it; a local slice in each subspace would pay for it again and again (in a
-/// corridor, most short arcs are the walls'). At most `limit` middles, in line and arc order.
+/// the obstacles alone (`alone`, free per `amongObstacles`) has an arc narrower than `spacing`
+/// and less than twice as wide, the arc is the obstacles' own, the same in every subspace, and
+/// the shared angles, which double every round, reach it at most a round later; a local slice
+/// in each subspace would pay for it again and again (in a corridor, most short arcs are the
+/// walls'). An arc the held robot makes more than twice as narrow still counts. At most `limit`
+/// middles, in line and arc order.
 std::vector<double> narrowArcMiddles(const std::vector<Line>& lines, const LineWorld& alone,
                                      const PoseTest& amongObstacles, std::vector<double> met,
                                      double spacing, size_t limit);
