@@ -12,6 +12,7 @@ packages=(
   libgtest-dev googletest libbenchmark-dev
   librsvg2-bin
   libpugixml-dev libpng-dev
+  libjemalloc-dev
   chromium
   ompl-demos
   pybind11-dev python3-dev python3-pytest

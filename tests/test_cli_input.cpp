@@ -21,6 +21,22 @@ json readJson(const std::string& path) { return json::parse(test::readFile(path)
 
 }  // namespace
 
+// The command line allocates through jemalloc where the build found it (apps/CMakeLists.txt):
+// a link that let glibc's malloc win the symbol lookup would cost 10-20 % of every plan, unseen.
+// Without it (sanitized builds, MMS_JEMALLOC off) the allocator is the one the build chose.
+TEST(CliInput, TheCommandLineAllocatesThroughJemallocWhereBuiltWithIt) {
+  const test::Outcome r =
+      test::runCommand("MALLOC_CONF=stats_print:true " + std::string(MMS_BINARY) + " --version");
+  EXPECT_EQ(r.code, 0);
+#ifdef MMS_CLI_JEMALLOC
+  constexpr bool kJemalloc = true;
+#else
+  constexpr bool kJemalloc = false;
+#endif
+  EXPECT_EQ(r.err.find("jemalloc statistics") != std::string::npos, kJemalloc)
+      << r.err.substr(0, 200);
+}
+
 TEST(CliInput, NegativeSeedAndNonNumericLimitsAreRefusedPlainly) {
   test::TempDir dir;
   const std::string scene = dir.path("s.json");

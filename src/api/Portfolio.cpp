@@ -45,7 +45,9 @@ constexpr std::chrono::milliseconds kHeadStart{2};
 /// takes the process's memory-map lock, which the sampler's page faults need too: on the bends
 /// (seeds 1-10) RRT-Connect took 1.7x as long beside MMS in the same process as alone, and
 /// 1.03x with blocks up to 32 MB kept in the heap and 64 MB of free top kept. Set once for the
-/// process: what the portfolio costs a program that embeds it is that memory kept. Also once:
+/// process: what the portfolio costs a program that embeds it is that memory kept. (The command
+/// line allocates through jemalloc, which keeps per-thread caches and ignores these settings.)
+/// Also once:
 /// what a second thread needs loaded before memory runs out (below).
 void prepareTheProcess() {
   static std::once_flag once;
