@@ -54,6 +54,10 @@ TEST(CliInput, NegativeSeedAndNonNumericLimitsAreRefusedPlainly) {
   const test::Outcome robots = run("scenario random --robots abc -o " + test::quote(dir.path("r")));
   EXPECT_EQ(robots.code, 2);
   EXPECT_NE(robots.err.find("--robots: 'abc' is not a number"), std::string::npos) << robots.err;
+  // A planner parameter out of its type says so in the same form.
+  const test::Outcome half = run("plan " + test::quote(scene) + " --n-theta 1.5");
+  EXPECT_EQ(half.code, 2);
+  EXPECT_EQ(half.err, "mms: --n-theta: not an integer (see mms --help)\n");
   // plan and bench take the same limits.
   for (const std::string& cmd :
        std::vector<std::string>{"plan " + test::quote(scene), "bench " + test::quote(scene)}) {

@@ -398,7 +398,7 @@ int main(int argc, char** argv) {
         if (*planCmd || *assembleCmd) {
           mms::sigintFlag();  // from here on, Ctrl-C ends them cleanly
           if (!mms::limitMemory(*planCmd ? pa.memoryMb : aa.memoryMb))
-            throw mms::InputError("--memory-limit: the system refused the limit");
+            throw mms::InputError("mms: --memory-limit: the system refused the limit");
         }
         if (*planCmd) {
           for (const auto& [name, option] : paramOptions) {
@@ -406,7 +406,7 @@ int main(int argc, char** argv) {
             double v = 1;  // a flag given
             if (!paramFlag.count(name))
               if (const std::string why = paramSpecs[name].parse(paramText[name], v); !why.empty())
-                throw mms::InputError("--" + name + ": " + why);
+                throw mms::InputError("mms: --" + name + ": " + why + " (see mms --help)");
             pa.params.values[name] = v;
           }
           return plan(pa);
