@@ -188,6 +188,17 @@ TEST(Limits, AFullRunOnAnUnsolvableSceneStaysUnderAGigabyte) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// The default planner for 20 s on `scene`, which has no solution, under a 768 MB cap: it ends
+// "not found", not out of memory, and writes no path.
+void expectNotFoundWithin768Mb(const std::string& scene, const std::string& out) {
+  const test::Outcome r =
+      test::runMms("plan " + test::quote(scene) + " --time-limit 20 --memory-limit 768 -q -o " +
+                   test::quote(out));
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_EQ(r.err.find("out of memory"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 // Two robots on a scene without a solution build overlay slices as long as they run (one robot
 // held, the other's slice minus its sum): 1.6 KB a slice, about 700 MB after the default 60 s.
 // 20 s under 768 MB (here: about 280 MB, and 300 MB is too little) leaves a machine twice as
@@ -197,12 +208,7 @@ TEST(Limits, TwoRobotsOnAnUnsolvableSceneStayLean) {
   test::TempDir dir;
   const std::string scene = dir.path("s.json"), out = dir.path("path.json");
   ASSERT_EQ(test::runMms("scenario random --seed 8 --robots 2 -o " + test::quote(scene)).code, 0);
-  const test::Outcome r =
-      test::runMms("plan " + test::quote(scene) + " --time-limit 20 --memory-limit 768 -q -o " +
-                   test::quote(out));
-  EXPECT_EQ(r.code, 1) << r.out << r.err;
-  EXPECT_EQ(r.err.find("out of memory"), std::string::npos) << r.err;
-  EXPECT_FALSE(std::filesystem::exists(out));
+  expectNotFoundWithin768Mb(scene, out);
 }
 
 // Three robots on a scene without a solution (the sealed ring's bar, and two squares that could
@@ -219,12 +225,7 @@ TEST(Limits, ThreeRobotsOnAnUnsolvableSceneStayLean) {
   s.robots.push_back({"a", square, {-8, 8, 0}, {0, 8, 0}, Motion::Rigid});
   s.robots.push_back({"b", square, {8, -8, 0}, {0, -8, 0}, Motion::Rigid});
   saveScene(s, scene);
-  const test::Outcome r =
-      test::runMms("plan " + test::quote(scene) + " --time-limit 20 --memory-limit 768 -q -o " +
-                   test::quote(out));
-  EXPECT_EQ(r.code, 1) << r.out << r.err;
-  EXPECT_EQ(r.err.find("out of memory"), std::string::npos) << r.err;
-  EXPECT_FALSE(std::filesystem::exists(out));
+  expectNotFoundWithin768Mb(scene, out);
 }
 
 // The default planner runs a second thread; where memory runs out there, the run still ends
