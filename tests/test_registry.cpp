@@ -172,7 +172,7 @@ namespace {
 
 struct LoopStats {
   size_t rounds = 0, rejectedPaths = 0;
-  double searchSeconds = 0, motionSeconds = 0, shortcutSeconds = 0, certifySeconds = 0;
+  double searchSeconds = 0, motionSeconds = 0, certifySeconds = 0;
 };
 
 // A manifold of `cells` cells that meets nothing: the loop's graph needs nodes, not geometry.

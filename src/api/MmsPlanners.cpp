@@ -39,7 +39,6 @@ PlanStatistics commonStatistics(const Stats& s, const SubspaceStats& m,
   for (const auto& phase : {std::pair<const char*, double>{"connect", m.connectSeconds},
                             {"search", s.searchSeconds},
                             {"motion", s.motionSeconds},
-                            {"shortcut", s.shortcutSeconds},
                             {"certify", s.certifySeconds}})
     p.phases.emplace_back(phase);
   return p;

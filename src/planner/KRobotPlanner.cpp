@@ -284,8 +284,7 @@ KRobotResult KRobotPlanner::solveRounds(const Termination& stop,
     }
   };
   h.motion = [&](const std::vector<size_t>& nodes) {
-    return certifiedMotion(scene_, checker_, roadmap_, nodes, rng_,
-                           {settings_.shortcutAttempts, /*oneRobotAtATime=*/true});
+    return certifiedMotion(scene_, checker_, roadmap_, nodes);
   };
   h.report = [&] {
     if (progress) progress(finish(result, PlanStatus::NotFound).stats);

@@ -45,7 +45,6 @@ struct KRobotSettings {
   // robot cuts no passage of any other robot at its start angle (one overlay per robot), else
   // the last.
   size_t screenCandidates = 16;
-  size_t shortcutAttempts = 300;
   size_t maxRounds = 0;  // 0: only the time limit stops it
   unsigned threads = 1;  // accepted for the seam; overlays are built on one thread
 };
@@ -57,7 +56,7 @@ struct KRobotStats {
   size_t pathManifolds = 0, pathSubspaces = 0;
   SubspaceStats manifolds;
   double baseSliceSeconds = 0, crossSeconds = 0, searchSeconds = 0, motionSeconds = 0,
-         shortcutSeconds = 0, certifySeconds = 0;
+         certifySeconds = 0;
   double totalSeconds = 0;
 };
 

@@ -122,7 +122,6 @@ PlanStatus MmsPlanner::solveTranslation(const Pose& start, const Pose& goal, Mms
   if (!route) return PlanStatus::NotFound;
   std::vector<Config> w;
   for (Vec2 p : *route) w.push_back({p.x, p.y, start.theta});
-  shortcutPath(scene_, checker_, rng_, settings_.shortcutAttempts, w);
   result.certificate = checkPath(scene_, checker_, w);
   if (!result.certificate.ok) {
     ++stats_.rejectedPaths;
@@ -188,8 +187,7 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
     report(false);
   };
   h.motion = [&](const std::vector<size_t>& nodes) {
-    return certifiedMotion(scene_, checker_, roadmap_, nodes, rng_,
-                           {settings_.shortcutAttempts, false});
+    return certifiedMotion(scene_, checker_, roadmap_, nodes);
   };
   h.report = [&] { report(true); };
   h.next = [&] {

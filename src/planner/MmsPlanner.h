@@ -35,7 +35,6 @@ struct MmsSettings {
   // time fell from 39 to 16 ms, on the corridor corner from 43 to 10 ms; the doors, one-robot open
   // clutter, bar-slot, bug trap and maze were unchanged within noise.
   double cornerLineShare = 0.5;
-  size_t shortcutAttempts = 200;
   PointLocation pointLocation = PointLocation::Auto;
   /// Threads that build slices (each round's slices in batches of this many). The result does
   /// not depend on it: slices are added to the roadmap in angle order.
@@ -67,8 +66,7 @@ struct MmsStats {
   size_t pathCells = 0;      // FSCs on the graph path
   size_t pathManifolds = 0;  // the slices and lines they lie on (of slices + lines built)
   size_t rejectedPaths = 0;  // candidate motions the checker refused
-  double searchSeconds = 0, motionSeconds = 0, shortcutSeconds = 0, certifySeconds = 0,
-         totalSeconds = 0;
+  double searchSeconds = 0, motionSeconds = 0, certifySeconds = 0, totalSeconds = 0;
 };
 
 struct MmsResult {

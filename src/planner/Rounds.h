@@ -33,7 +33,7 @@ struct RoundsOutcome {
 };
 
 /// `Stats` holds the counters every MMS planner reports: rounds, rejectedPaths and the
-/// seconds of search, motion, shortcut and certify.
+/// seconds of search, motion and certify.
 template <class Stats>
 RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from, size_t to,
                         const Termination& stop, Stats& stats) {
@@ -56,7 +56,6 @@ RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from
     if (nodes) {
       out.motion = h.motion(*nodes);
       stats.motionSeconds += out.motion.buildSeconds;
-      stats.shortcutSeconds += out.motion.shortcutSeconds;
       stats.certifySeconds += out.motion.certifySeconds;
       if (out.motion.ok) {
         out.nodes = *nodes;

@@ -334,8 +334,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     }
   };
   h.motion = [&](const std::vector<size_t>& nodes) {
-    return certifiedMotion(scene_, checker_, roadmap_, nodes, rng_,
-                           {settings_.shortcutAttempts, /*oneRobotAtATime=*/true});
+    return certifiedMotion(scene_, checker_, roadmap_, nodes);
   };
   h.refused = [&] { sliceNarrowArcsNow(); };
   h.report = [&] {

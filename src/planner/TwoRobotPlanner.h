@@ -65,7 +65,6 @@ struct TwoRobotSettings {
   // gripper turning with the part it holds needs many alternating small moves of one robot at
   // a time otherwise.
   bool coupled = true;
-  size_t shortcutAttempts = 300;
   // Give up after this many rounds (0: only the time limit stops it). A budget in rounds,
   // unlike one in seconds, gives the same answer for the same seed on any machine.
   size_t maxRounds = 0;
@@ -83,7 +82,7 @@ struct TwoRobotStats {
   SubspaceStats manifolds;  // slices, lines, cells, arcs over all one-robot subspaces
   SubspaceStats compound;   // the same over the compound subspaces (the pair as one body)
   double baseSliceSeconds = 0, crossSeconds = 0, searchSeconds = 0, motionSeconds = 0,
-         shortcutSeconds = 0, certifySeconds = 0;
+         certifySeconds = 0;
   double totalSeconds = 0;
 };
 
