@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# MMS and OMPL's RRT-Connect on every OMPL.app planar problem (read from ../shared, never
-# copied here), 5 seeds each, in one mms bench run: the table in docs/import.md.
-#   RUNS=5 LIMIT=60 JOBS=2 bash scripts/bench-omplapp.sh [OUT]
+# MMS, the default planner (auto) and OMPL's RRT-Connect on every OMPL.app planar problem (read
+# from ../shared, never copied here), 5 seeds each, in one mms bench run: the table in
+# docs/import.md.
+#   RUNS=5 LIMIT=60 JOBS=2 PLANNERS=mms,auto,rrtconnect bash scripts/bench-omplapp.sh [OUT]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 data=${OMPLAPP_DIR:-../shared/data/omplapp-2d}
@@ -10,6 +11,6 @@ if ! ls "$data"/*.cfg >/dev/null 2>&1; then
   exit 2
 fi
 out=${1:-bench-omplapp}
-build/mms bench "$data"/*.cfg --planners mms,rrtconnect --param "mms=--threads 1" \
+build/mms bench "$data"/*.cfg --planners "${PLANNERS:-mms,auto,rrtconnect}" --param "mms=--threads 1" \
   --runs "${RUNS:-5}" --time-limit "${LIMIT:-60}" --jobs "${JOBS:-2}" -o "$out"
 echo "report: $out/report.md"
