@@ -28,9 +28,7 @@
 namespace {
 
 // PTHREAD_ONCE_INIT is 0.
-constexpr int kIdle = 0, kRunning = 1, kRunningAwaited = 2, kDone = 3;
-
-std::atomic<unsigned long> initsRun{0};
+constexpr int kIdle = 0, kRunning = 1, kRunningAwaited = 2, kDone = mms::kQuietOnceDone;
 
 void futex(int* word, int op, int value) {
   syscall(SYS_futex, word, op | FUTEX_PRIVATE_FLAG, value, nullptr, nullptr, 0);
@@ -58,7 +56,6 @@ extern "C" int pthread_once(pthread_once_t* control, void (*init)(void)) {
         finish(word, kIdle);
         throw;
       }
-      initsRun.fetch_add(1, std::memory_order_relaxed);
       finish(word, kDone);
       return 0;
     }
@@ -71,7 +68,3 @@ extern "C" int pthread_once(pthread_once_t* control, void (*init)(void)) {
   }
   return 0;
 }
-
-namespace mms {
-unsigned long quietOnceInitsRun() { return initsRun.load(std::memory_order_relaxed); }
-}  // namespace mms
