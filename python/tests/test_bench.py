@@ -16,9 +16,11 @@ def test_bench_two_planners(tmp_path):
     assert {r["planner"] for r in rows} == {"mms", "rrtconnect"}
     assert {r["seed"] for r in rows} == {1, 2}
     for r in rows:
-        # RRT-Connect may miss the bar's slot in 10 s (under the sanitizers it does).
+        # RRT-Connect may miss the bar's slot in 10 s (under the sanitizers it does), or find
+        # it just before the limit: the sanitizers' exit-time leak check then carries the
+        # process (~0.4 s) past the limit's margin, and the bench counts the run "over_limit".
         if r["planner"] == "rrtconnect" and r["scene"].startswith("bar-slot"):
-            assert r["status"] in ("found", "not_found"), r
+            assert r["status"] in ("found", "not_found", "over_limit"), r
             continue
         assert r["status"] == "found" and r["seconds"] > 0 and r["translation"] > 0, r
     assert mms.load_bench(tmp_path / "b") == rows
