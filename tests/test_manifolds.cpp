@@ -1,5 +1,6 @@
 // Slice and line free-space cells against an independent reference: the collision checker
 // sampled inside, just inside and just outside every cell.
+#include <CGAL/convex_hull_2.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -187,6 +188,58 @@ TEST(Slice, OverlaysAgreeWhetherTheirSumWasKeptOrRedone) {
             << "convex " << convex << ", k " << k;
     }
   }
+}
+
+// The merge of two convex polygons' edges against the convex hull of all n * m vertex sums
+// (CGAL's exact hull), vertex for vertex: random hulls; squares and hexagons, whose edges are
+// parallel and antiparallel; collinear and repeated vertices; clockwise input; a segment.
+TEST(ConvexMinkowskiSum, IsTheHullOfAllVertexSums) {
+  using exact::Point;
+  using exact::Polygon;
+  auto hullOfSums = [](const Polygon& a, const Polygon& b) {
+    std::vector<Point> sums, hull;
+    for (const Point& p : a.vertices())
+      for (const Point& q : b.vertices()) sums.push_back(p + (q - CGAL::ORIGIN));
+    CGAL::convex_hull_2(sums.begin(), sums.end(), std::back_inserter(hull));
+    return hull;
+  };
+  auto sameCycle = [](const std::vector<Point>& got, const std::vector<Point>& want) {
+    if (got.size() != want.size() || want.empty()) return false;
+    for (size_t s = 0; s < want.size(); ++s) {
+      bool all = true;
+      for (size_t i = 0; i < want.size() && all; ++i) all = got[i] == want[(i + s) % want.size()];
+      if (all) return true;
+    }
+    return false;
+  };
+  auto polygon = [](const Ring& r) { return exact::toExact(r); };
+  std::vector<Polygon> shapes;
+  Random rng(8);
+  for (int k = 0; k < 12; ++k) {
+    std::vector<Vec2> pts;
+    const int n = 3 + int(rng.uniform(0, 12));
+    for (int i = 0; i < n; ++i) pts.push_back({rng.uniform(-3, 3), rng.uniform(-2, 2)});
+    shapes.push_back(polygon(exact::convexHull(pts)));
+  }
+  shapes.push_back(polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}));                   // square
+  shapes.push_back(polygon({{0, 0}, {2, 0}, {3, 1}, {2, 2}, {0, 2}, {-1, 1}}));  // hexagon
+  // Collinear and repeated vertices, the first one on an edge.
+  shapes.push_back(polygon({{1, 0}, {2, 0}, {2, 0}, {2, 1}, {2, 2}, {0, 2}, {0, 0}}));
+  Polygon clockwise = polygon({{0, 0}, {4, 1}, {1, 3}});
+  clockwise.reverse_orientation();
+  shapes.push_back(clockwise);
+  size_t compared = 0;
+  for (const Polygon& a : shapes)
+    for (const Polygon& b : shapes) {
+      const Polygon sum = exact::convexMinkowskiSum(a, b);
+      const std::vector<Point> got(sum.vertices_begin(), sum.vertices_end());
+      EXPECT_TRUE(sameCycle(got, hullOfSums(a, b))) << "pair " << compared;
+      EXPECT_TRUE(sum.is_convex() && sum.is_counterclockwise_oriented());
+      ++compared;
+    }
+  EXPECT_EQ(compared, shapes.size() * shapes.size());
+  // No area, no sum: the caller falls back on CGAL's general Minkowski sum.
+  EXPECT_TRUE(exact::convexMinkowskiSum(polygon({{0, 0}, {1, 1}, {2, 2}}), shapes[0]).is_empty());
 }
 
 TEST(Slice, TooLargeRobotHasNoCells) {

@@ -1,6 +1,7 @@
 #pragma once
 // Plain double-precision geometry values shared by every stage and the public API. The exact
 // types stay inside the library (src/geometry/Exact.h), with the conversions between the two.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -35,9 +36,11 @@ struct Box {
   double height() const { return ymax - ymin; }
   /// Distance between two boxes (0 when they overlap).
   double distance(const Box& o) const { return std::sqrt(distance2(o)); }
+  /// std::max, not std::fmax: fmax is a call into libm (it orders NaNs), and the certifier's
+  /// edge loops call this millions of times.
   double distance2(const Box& o) const {
-    const double dx = std::fmax(0.0, std::fmax(o.xmin - xmax, xmin - o.xmax));
-    const double dy = std::fmax(0.0, std::fmax(o.ymin - ymax, ymin - o.ymax));
+    const double dx = std::max(0.0, std::max(o.xmin - xmax, xmin - o.xmax));
+    const double dy = std::max(0.0, std::max(o.ymin - ymax, ymin - o.ymax));
     return dx * dx + dy * dy;
   }
 };

@@ -5,6 +5,7 @@
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/convex_hull_2.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mms::exact {
@@ -69,6 +70,74 @@ Polygon rotated(const Polygon& poly, const RationalAngle& angle) {
   for (const Point& p : poly.vertices())
     out.push_back(Point(c * p.x() - s * p.y(), s * p.x() + c * p.y()));
   return out;
+}
+
+namespace {
+
+using ExactPoint = Kernel::Exact_kernel::Point_2;
+using ExactVector = Kernel::Exact_kernel::Vector_2;
+
+// A convex polygon's vertices, exact, counter-clockwise from its lowest (then leftmost) vertex,
+// without repeated or collinear vertices: its edges then turn strictly left, in order of angle
+// from 0 to 2 pi. Fewer than three when it has no area.
+std::vector<ExactPoint> convexFromLowest(const Polygon& poly) {
+  std::vector<ExactPoint> v;
+  v.reserve(poly.size());
+  for (const Point& p : poly.vertices())
+    if (v.empty() || CGAL::exact(p) != v.back()) v.push_back(CGAL::exact(p));
+  while (v.size() > 1 && v.front() == v.back()) v.pop_back();
+  const size_t n = v.size();
+  // A convex polygon turns one way at every vertex that is not collinear.
+  CGAL::Orientation turn = CGAL::COLLINEAR;
+  for (size_t i = 0; i < n && turn == CGAL::COLLINEAR; ++i)
+    turn = CGAL::orientation(v[(i + n - 1) % n], v[i], v[(i + 1) % n]);
+  if (turn == CGAL::RIGHT_TURN) std::reverse(v.begin(), v.end());
+  std::vector<ExactPoint> out;
+  out.reserve(n);
+  for (size_t i = 0; i < n; ++i)
+    if (CGAL::orientation(v[(i + n - 1) % n], v[i], v[(i + 1) % n]) == CGAL::LEFT_TURN)
+      out.push_back(v[i]);
+  const auto lowest = std::min_element(out.begin(), out.end(), [](const auto& p, const auto& q) {
+    return p.y() < q.y() || (p.y() == q.y() && p.x() < q.x());
+  });
+  std::rotate(out.begin(), lowest, out.end());
+  return out;
+}
+
+// Whether direction d's angle in [0, 2 pi) is below e's.
+bool angleBelow(const ExactVector& d, const ExactVector& e) {
+  auto upper = [](const ExactVector& v) { return v.y() > 0 || (v.y() == 0 && v.x() > 0); };
+  if (upper(d) != upper(e)) return upper(d);
+  return CGAL::orientation(d, e) == CGAL::LEFT_TURN;
+}
+
+}  // namespace
+
+Polygon convexMinkowskiSum(const Polygon& a, const Polygon& b) {
+  const std::vector<ExactPoint> p = convexFromLowest(a), q = convexFromLowest(b);
+  const size_t n = p.size(), m = q.size();
+  Polygon sum;
+  if (n < 3 || m < 3) return sum;
+  size_t i = 0, j = 0;
+  while (i < n || j < m) {
+    const ExactPoint& u = p[i % n];
+    const ExactPoint& w = q[j % m];
+    sum.push_back(Point(Point::Rep(ExactPoint(u.x() + w.x(), u.y() + w.y()))));
+    if (i == n) {
+      ++j;
+    } else if (j == m) {
+      ++i;
+    } else {
+      const ExactVector d = p[(i + 1) % n] - u, e = q[(j + 1) % m] - w;
+      if (angleBelow(d, e))
+        ++i;
+      else if (angleBelow(e, d))
+        ++j;
+      else
+        ++i, ++j;  // parallel edges, same direction: one edge of the sum
+    }
+  }
+  return sum;
 }
 
 bool interiorsIntersect(const Ring& a, const Ring& b) {

@@ -39,6 +39,13 @@ Ring toDouble(const Polygon& poly);
 /// The polygon rotated by `angle` about the origin, exactly.
 Polygon rotated(const Polygon& poly, const RationalAngle& angle);
 
+/// The Minkowski sum of two convex polygons (either orientation), exactly: their edges merged
+/// in order of angle, n + m exact additions where the hull of all n * m vertex sums took a
+/// quarter of a two-disc plan. Counter-clockwise from its lowest (then leftmost) vertex, without
+/// collinear or repeated vertices. Its vertices store their exact value (no lazy construction
+/// to evaluate). Empty when either polygon has no area.
+Polygon convexMinkowskiSum(const Polygon& a, const Polygon& b);
+
 /// Exact predicate: the interiors of the two simple polygons (given in doubles, taken as
 /// exact values) intersect. Touching boundaries do not count. The independent reference for
 /// the floating-point collision checker.
