@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "geometry/CollisionChecker.h"
 #include "geometry/Exact.h"
@@ -134,6 +135,43 @@ TEST(CollisionChecker, RobotPairsAgreeWithExactPredicates) {
   EXPECT_EQ(mismatches, 0);
   EXPECT_GT(overlaps, 500);
   EXPECT_LT(overlaps, 4500);
+}
+
+// The distance between two robots against every pair of their edges; with a bound it is the
+// distance when below the bound and the bound otherwise (the certifier's shortcut for far
+// robots).
+TEST(CollisionChecker, RobotsDistanceIsTheNearestEdgePairOrTheBound) {
+  Random rng(23);
+  Scene s;
+  s.bounds = {-10, -10, 10, 10};
+  for (int k = 0; k < 2; ++k) {
+    Robot r;
+    r.name = "r" + std::to_string(k);
+    r.shape = randomStarPolygon(rng, {0, 0}, 0.5, 2.0, 9);
+    s.robots.push_back(r);
+  }
+  const CollisionChecker checker(s);
+  int apart = 0, bounded = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Pose p{rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-M_PI, M_PI)};
+    const Pose q{rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-M_PI, M_PI)};
+    const Ring a = placedRing(checker.shrunkShape(0), p), b = placedRing(checker.shrunkShape(1), q);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t u = 0; u < a.size(); ++u)
+      for (size_t v = 0; v < b.size(); ++v)
+        nearest = std::min(nearest, segmentSegmentDistance(a[u], a[(u + 1) % a.size()], b[v],
+                                                           b[(v + 1) % b.size()]));
+    if (ringsIntersect(a, boundingBox(a), b, boundingBox(b))) nearest = 0;
+    const double d = checker.robotsDistance(0, p, 1, q);
+    ASSERT_NEAR(d, nearest, 1e-12) << "placement " << i;
+    apart += d > 0;
+    const double bound = rng.uniform(0, 2 * d + 0.1);
+    const double withBound = checker.robotsDistance(0, p, 1, q, bound);
+    bounded += d >= bound;
+    EXPECT_EQ(withBound, d < bound ? d : bound) << "placement " << i;
+  }
+  EXPECT_GT(apart, 1000);
+  EXPECT_GT(bounded, 500);
 }
 
 TEST(CollisionChecker, ExactContactsAreFreeAndPenetrationIsNot) {

@@ -115,10 +115,11 @@ CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const
   return c;
 }
 
-double CollisionChecker::robotsDistance(size_t a, const Pose& pa, size_t b, const Pose& pb) const {
+double CollisionChecker::robotsDistance(size_t a, const Pose& pa, size_t b, const Pose& pb,
+                                        double bound) const {
   transformRing(shapes_[a], pa, placedA);
   transformRing(shapes_[b], pb, placedB);
-  return ringDistance(placedA, boundingBox(placedA), placedB, boundingBox(placedB));
+  return ringDistance(placedA, boundingBox(placedA), placedB, boundingBox(placedB), bound);
 }
 
 }  // namespace mms

@@ -8,6 +8,7 @@
 // depth delta count as touching, and exact contacts (as MMS produces them) are never
 // reported as collisions however the doubles round.
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,8 +55,10 @@ class CollisionChecker {
   };
   /// Distance from the (shrunk) robot to the bounds and the obstacles.
   Clearance robotClearance(size_t robot, const Pose& pose) const;
-  /// Distance between two (shrunk) robots.
-  double robotsDistance(size_t a, const Pose& pa, size_t b, const Pose& pb) const;
+  /// Distance between two (shrunk) robots, or `bound` when it is at least that (far robots
+  /// then cost a box test per edge instead of a test per pair of edges).
+  double robotsDistance(size_t a, const Pose& pa, size_t b, const Pose& pb,
+                        double bound = std::numeric_limits<double>::infinity()) const;
 
   double tolerance() const { return tolerance_; }
   /// Largest distance of a shape point from its frame origin: a rotation by dtheta moves no
