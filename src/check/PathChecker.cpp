@@ -131,21 +131,24 @@ class Certifier {
       st = distance <= 0 ? Status::Collision : Status::Uncertified;
       hit_ = {robot, other};
     };
+    // Beyond both the displacement bound and the smallest clearance so far, the exact distance
+    // changes nothing: a distance just past them stands in for it, and far obstacles and
+    // robots cost a box test per edge.
+    auto enough = [&](double bound) {
+      return std::nextafter(std::max(bound, r_.minClearance + checker_.tolerance()), kInf);
+    };
     for (size_t i = 0; i < k_; ++i) {
       if (movingOnly != (rate_[i] > 0)) continue;
-      const auto c = checker_.robotClearance(i, interpolated(i, s));
-      note(c.distance, half * rate_[i], i, c.nearest);
+      const double bound = half * rate_[i];
+      const auto c = checker_.robotClearance(i, interpolated(i, s), enough(bound));
+      note(c.distance, bound, i, c.nearest);
     }
     for (size_t i = 0; i < k_; ++i)
       for (size_t j = i + 1; j < k_; ++j) {
         if (movingOnly != (rate_[i] > 0 || rate_[j] > 0)) continue;
-        // Beyond both the displacement bound and the smallest clearance so far, the exact
-        // distance changes nothing: a distance just past them stands in for it.
         const double bound = half * (rate_[i] + rate_[j]);
-        const double enough =
-            std::nextafter(std::max(bound, r_.minClearance + checker_.tolerance()), kInf);
         const double d =
-            checker_.robotsDistance(i, interpolated(i, s), j, interpolated(j, s), enough);
+            checker_.robotsDistance(i, interpolated(i, s), j, interpolated(j, s), enough(bound));
         note(d, bound, i, Contact{Contact::Kind::Robot, j});
       }
     return st;

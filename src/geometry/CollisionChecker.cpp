@@ -98,10 +98,11 @@ std::optional<std::pair<size_t, Contact>> CollisionChecker::firstContact(const C
 
 bool CollisionChecker::isFree(const Config& q) const { return !firstContact(q).has_value(); }
 
-CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const Pose& pose) const {
+CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const Pose& pose,
+                                                             double bound) const {
   transformRing(shapes_[robot], pose, placedA);
   const Box box = boundingBox(placedA);
-  Clearance c{std::numeric_limits<double>::infinity(), {Contact::Kind::Bounds, 0}};
+  Clearance c{bound, {Contact::Kind::Bounds, 0}};
   for (Vec2 v : placedA) {
     const double d = std::min(std::min(v.x - bounds_.xmin, bounds_.xmax - v.x),
                               std::min(v.y - bounds_.ymin, bounds_.ymax - v.y));

@@ -54,7 +54,9 @@ class CollisionChecker {
     Contact nearest;
   };
   /// Distance from the (shrunk) robot to the bounds and the obstacles.
-  Clearance robotClearance(size_t robot, const Pose& pose) const;
+  /// With a bound: the bound when nothing is nearer (`nearest` then names the bounds).
+  Clearance robotClearance(size_t robot, const Pose& pose,
+                           double bound = std::numeric_limits<double>::infinity()) const;
   /// Distance between two (shrunk) robots, or `bound` when it is at least that (far robots
   /// then cost a box test per edge instead of a test per pair of edges).
   double robotsDistance(size_t a, const Pose& pa, size_t b, const Pose& pb,
