@@ -1,6 +1,8 @@
 // The default planner "auto": MMS and RRT-Connect race; the first certified path wins, the
 // statistics name the winner, and the winner alone with the same seed gives the same path.
 #include <gtest/gtest.h>
+#include <pthread.h>
+#include <sched.h>
 
 #include <nlohmann/json.hpp>
 #include <set>
@@ -82,6 +84,25 @@ TEST(Portfolio, ThreeRobotsArePlannedByMmsAloneAndByTheRace) {
 }
 
 // Where neither member finds a path both stop at the limit: the run ends "not found" on time.
+// While they race, the sampler's thread keeps its core and MMS's gets the others; the caller's
+// thread has all its cores back when solve() returns, whoever won. The bar's slot takes
+// RRT-Connect longer than the head start, so MMS does start.
+TEST(Portfolio, TheCallersCoresAreItsOwnAgainAfterTheRace) {
+  cpu_set_t before;
+  ASSERT_EQ(pthread_getaffinity_np(pthread_self(), sizeof before, &before), 0);
+  const Scene scene = loadScene(test::scenario("one-robot/bar-slot.json"));
+  for (const uint64_t seed : {1, 2, 3}) {
+    PlannerParams params;
+    params.seed = seed;
+    const PlanResult r = makePlanner("auto", scene, params)->solve(Termination(60));
+    ASSERT_EQ(r.status, PlanStatus::Found);
+    cpu_set_t after;
+    ASSERT_EQ(pthread_getaffinity_np(pthread_self(), sizeof after, &after), 0);
+    EXPECT_TRUE(CPU_EQUAL(&before, &after))
+        << "seed " << seed << ": " << CPU_COUNT(&after) << " cores of " << CPU_COUNT(&before);
+  }
+}
+
 TEST(Portfolio, BothMembersStopAtTheLimit) {
   const Scene scene = loadScene(test::scenario("one-robot/sealed-ring.json"));
   const auto planner = makePlanner("auto", scene);

@@ -9,6 +9,8 @@
 // reproduces it exactly. Which member wins a close race can depend on the machine's load.
 #include <execinfo.h>
 #include <malloc.h>
+#include <pthread.h>
+#include <sched.h>
 
 #include <atomic>
 #include <chrono>
@@ -62,6 +64,50 @@ void prepareTheProcess() {
   });
 }
 
+/// Keeps the two members of the race on different cores. Left to the scheduler, a new thread
+/// often starts on its creator's core and stays there for milliseconds, which is the whole race
+/// on open scenes: with two cores, RRT-Connect beside MMS (or beside a mere busy loop, in this
+/// process or another) took 1.2-1.6x its time alone on the bends, and MMS in the portfolio 1.6x
+/// its time alone on the corridor corner. So, once MMS starts, the sampler's thread keeps the
+/// core it is on and MMS (with any threads it starts) gets every other core the process may
+/// use; the sampler's thread gets its cores back when the race is over. With one core there is
+/// nothing to do.
+class CoresApart {
+ public:
+  CoresApart() = default;
+  CoresApart(const CoresApart&) = delete;
+  CoresApart& operator=(const CoresApart&) = delete;
+
+  /// On the sampler's thread, before MMS's starts: keeps this thread on its core, and returns
+  /// whether MMS's should move to the others (then by calling `moveHere` itself: a thread's
+  /// handle names the caller once that thread has ended).
+  bool keepApart() {
+    if (pthread_getaffinity_np(pthread_self(), sizeof allowed_, &allowed_) != 0) return false;
+    const int here = sched_getcpu();
+    if (CPU_COUNT(&allowed_) < 2 || here < 0 || here >= CPU_SETSIZE || !CPU_ISSET(here, &allowed_))
+      return false;
+    others_ = allowed_;
+    CPU_CLR(here, &others_);
+    cpu_set_t mine;
+    CPU_ZERO(&mine);
+    CPU_SET(here, &mine);
+    pinned_ = pthread_setaffinity_np(pthread_self(), sizeof mine, &mine) == 0;
+    return pinned_;
+  }
+  /// On MMS's thread, first thing.
+  void moveHere() const { pthread_setaffinity_np(pthread_self(), sizeof others_, &others_); }
+  /// On the sampler's thread, once it is done: its cores back to it. MMS's thread keeps the
+  /// others while it runs on (the sampler gave up, or its path was refused).
+  void restore() {
+    if (pinned_) pthread_setaffinity_np(pthread_self(), sizeof allowed_, &allowed_);
+    pinned_ = false;
+  }
+
+ private:
+  cpu_set_t allowed_{}, others_{};
+  bool pinned_ = false;
+};
+
 /// MMS's side of the race. It begins only once the sampler has run for the head start: the
 /// sampler tells it of each check of its termination condition, and the first check past the
 /// head start makes MMS and starts it on a thread of its own. On open scenes the sampler is done
@@ -95,7 +141,11 @@ class Challenger final : public Termination::Watcher {
     if (started_.exchange(true)) return;
     prepareTheProcess();  // not before: a sampler done within the head start runs as alone
     try {
-      thread_ = std::thread([this] { run(); });
+      const bool apart = cores_.keepApart();
+      thread_ = std::thread([this, apart] {
+        if (apart) cores_.moveHere();
+        run();
+      });
     } catch (const std::system_error&) {  // no room for a thread's stack: the memory limit
       failure_ = std::make_exception_ptr(std::bad_alloc());
       ended_ = true;
@@ -110,8 +160,9 @@ class Challenger final : public Termination::Watcher {
   }
   /// Ends the race: MMS stops at its next check.
   void end() { ended_ = true; }
-  /// Waits for MMS to finish: found, out of time, cancelled or ended.
+  /// Waits for MMS to finish: found, out of time, cancelled or ended. On the sampler's thread.
   void join() {
+    cores_.restore();
     if (thread_.joinable()) thread_.join();
   }
   /// Rethrows what MMS threw.
@@ -144,6 +195,7 @@ class Challenger final : public Termination::Watcher {
   const Termination race_;
   const Termination::Clock::time_point headStartEnds_;
   std::thread thread_;
+  CoresApart cores_;
   PlanResult own_;
   double ownAt_ = std::numeric_limits<double>::infinity();
   std::exception_ptr failure_;
