@@ -36,6 +36,19 @@ Scene benchmarkScene(uint64_t seed) {
   return parseScene(sceneToJson(randomPolygonsScene(st)), "generated");
 }
 
+// Two random star-shaped 9-gons in an empty room.
+Scene twoStarRobots(Random& rng) {
+  Scene s;
+  s.bounds = {-10, -10, 10, 10};
+  for (int k = 0; k < 2; ++k) {
+    Robot r;
+    r.name = "r" + std::to_string(k);
+    r.shape = randomStarPolygon(rng, {0, 0}, 0.5, 2.0, 9);
+    s.robots.push_back(r);
+  }
+  return s;
+}
+
 }  // namespace
 
 TEST(CollisionChecker, AgreesWithExactPredicatesOnRandomPlacements) {
@@ -113,14 +126,7 @@ TEST(CollisionChecker, TreatsNearContactsAsTouching) {
 
 TEST(CollisionChecker, RobotPairsAgreeWithExactPredicates) {
   Random rng(21);
-  Scene s;
-  s.bounds = {-10, -10, 10, 10};
-  for (int k = 0; k < 2; ++k) {
-    Robot r;
-    r.name = "r" + std::to_string(k);
-    r.shape = randomStarPolygon(rng, {0, 0}, 0.5, 2.0, 9);
-    s.robots.push_back(r);
-  }
+  const Scene s = twoStarRobots(rng);
   const CollisionChecker checker(s);
   int overlaps = 0, mismatches = 0;
   for (int i = 0; i < 5000; ++i) {
@@ -142,14 +148,7 @@ TEST(CollisionChecker, RobotPairsAgreeWithExactPredicates) {
 // robots).
 TEST(CollisionChecker, RobotsDistanceIsTheNearestEdgePairOrTheBound) {
   Random rng(23);
-  Scene s;
-  s.bounds = {-10, -10, 10, 10};
-  for (int k = 0; k < 2; ++k) {
-    Robot r;
-    r.name = "r" + std::to_string(k);
-    r.shape = randomStarPolygon(rng, {0, 0}, 0.5, 2.0, 9);
-    s.robots.push_back(r);
-  }
+  const Scene s = twoStarRobots(rng);
   const CollisionChecker checker(s);
   int apart = 0, bounded = 0;
   for (int i = 0; i < 3000; ++i) {
