@@ -122,7 +122,7 @@ Polygon convexMinkowskiSum(const Polygon& a, const Polygon& b) {
   while (i < n || j < m) {
     const ExactPoint& u = p[i % n];
     const ExactPoint& w = q[j % m];
-    sum.push_back(Point(Point::Rep(ExactPoint(u.x() + w.x(), u.y() + w.y()))));
+    sum.push_back(exactPoint(u.x() + w.x(), u.y() + w.y()));
     if (i == n) {
       ++j;
     } else if (j == m) {

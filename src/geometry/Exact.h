@@ -17,6 +17,17 @@ using FT = Kernel::FT;
 using Point = Kernel::Point_2;
 using Polygon = CGAL::Polygon_2<Kernel>;
 
+/// The exact kernel's number type (rationals), behind the lazy one.
+using ExactFT = Kernel::Exact_kernel::FT;
+
+/// A point born exact: its exact coordinates and their intervals are stored at once, so a
+/// predicate that its interval cannot decide reads the rationals instead of first evaluating a
+/// lazy construction of two lazy numbers. CGAL's call_once still runs, once per point and with
+/// nothing to compute, instead of once for the point and once for each coordinate.
+inline Point exactPoint(const ExactFT& x, const ExactFT& y) {
+  return Point(Point::Rep(Kernel::Exact_kernel::Point_2(x, y)));
+}
+
 /// An angle whose rotation is exact: rotation by 2*atan(t), then by pi when `half` is set.
 /// With |t| <= 1 every angle is reachable, including pi (t = 0, half = true), which plain
 /// tan(theta/2) cannot express.

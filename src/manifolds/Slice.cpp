@@ -21,6 +21,8 @@
 
 namespace mms {
 
+using exact::ExactFT;
+using exact::exactPoint;
 using exact::FT;
 using exact::Kernel;
 using exact::Point;
@@ -39,15 +41,6 @@ struct SliceWorld::Impl {
 };
 
 namespace {
-
-// A point born exact: its exact coordinates and their intervals are stored at once, so a
-// predicate that its interval cannot decide reads the rationals instead of first evaluating a
-// lazy construction of two lazy numbers. CGAL's call_once still runs, once per point and with
-// nothing to compute, instead of once for the point and once for each coordinate.
-using ExactFT = Kernel::Exact_kernel::FT;
-Point exactPoint(const ExactFT& x, const ExactFT& y) {
-  return Point(Point::Rep(Kernel::Exact_kernel::Point_2(x, y)));
-}
 
 // The Minkowski sum a (+) b. Of two convex polygons: their edges merged in order of angle
 // (exact::convexMinkowskiSum). Exact like CGAL's reduced convolution, and several times cheaper
