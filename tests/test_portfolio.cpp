@@ -83,7 +83,6 @@ TEST(Portfolio, ThreeRobotsArePlannedByMmsAloneAndByTheRace) {
   EXPECT_EQ(runMms("check " + quote(file) + " " + quote(out)).code, 0);
 }
 
-// Where neither member finds a path both stop at the limit: the run ends "not found" on time.
 // While they race, the sampler's thread keeps its core and MMS's gets the others; the caller's
 // thread has all its cores back when solve() returns, whoever won. The bar's slot takes
 // RRT-Connect longer than the head start, so MMS does start.
@@ -103,6 +102,7 @@ TEST(Portfolio, TheCallersCoresAreItsOwnAgainAfterTheRace) {
   }
 }
 
+// Where neither member finds a path both stop at the limit: the run ends "not found" on time.
 TEST(Portfolio, BothMembersStopAtTheLimit) {
   const Scene scene = loadScene(test::scenario("one-robot/sealed-ring.json"));
   const auto planner = makePlanner("auto", scene);
