@@ -19,8 +19,6 @@
 #include <limits>
 #include <memory>
 #include <mutex>
-#include <system_error>
-#include <thread>
 
 #include "api/Adapters.h"
 
@@ -72,30 +70,37 @@ void prepareTheProcess() {
 /// core it is on and MMS (with any threads it starts) gets every other core the process may
 /// use; the sampler's thread gets its cores back when the race is over. With one core there is
 /// nothing to do.
+///
+/// MMS's thread is created with its cores (a thread attribute), not moved there once running:
+/// a thread created by the pinned sampler inherits the sampler's one core and waits there until
+/// the sampler's time slice ends, 1.3-5 ms on this machine (bar-slot, measured from the thread's
+/// creation to its first instruction), before it can move itself.
 class CoresApart {
  public:
   CoresApart() = default;
   CoresApart(const CoresApart&) = delete;
   CoresApart& operator=(const CoresApart&) = delete;
 
-  /// On the sampler's thread, before MMS's starts: keeps this thread on its core, and returns
-  /// whether MMS's should move to the others (then by calling `moveHere` itself: a thread's
-  /// handle names the caller once that thread has ended).
-  bool keepApart() {
+  /// On the sampler's thread, before MMS's starts: whether the two can run apart, and then
+  /// `others()` are the cores for MMS's thread.
+  bool plan() {
     if (pthread_getaffinity_np(pthread_self(), sizeof allowed_, &allowed_) != 0) return false;
-    const int here = sched_getcpu();
-    if (CPU_COUNT(&allowed_) < 2 || here < 0 || here >= CPU_SETSIZE || !CPU_ISSET(here, &allowed_))
+    here_ = sched_getcpu();
+    if (CPU_COUNT(&allowed_) < 2 || here_ < 0 || here_ >= CPU_SETSIZE ||
+        !CPU_ISSET(here_, &allowed_))
       return false;
     others_ = allowed_;
-    CPU_CLR(here, &others_);
+    CPU_CLR(here_, &others_);
+    return true;
+  }
+  const cpu_set_t& others() const { return others_; }
+  /// On the sampler's thread, once MMS's has started on the others: keeps this thread where it is.
+  void keepHere() {
     cpu_set_t mine;
     CPU_ZERO(&mine);
-    CPU_SET(here, &mine);
+    CPU_SET(here_, &mine);
     pinned_ = pthread_setaffinity_np(pthread_self(), sizeof mine, &mine) == 0;
-    return pinned_;
   }
-  /// On MMS's thread, first thing.
-  void moveHere() const { pthread_setaffinity_np(pthread_self(), sizeof others_, &others_); }
   /// On the sampler's thread, once it is done: its cores back to it. MMS's thread keeps the
   /// others while it runs on (the sampler gave up, or its path was refused).
   void restore() {
@@ -105,6 +110,7 @@ class CoresApart {
 
  private:
   cpu_set_t allowed_{}, others_{};
+  int here_ = -1;
   bool pinned_ = false;
 };
 
@@ -140,16 +146,21 @@ class Challenger final : public Termination::Watcher {
     if (started_.load(std::memory_order_relaxed) || now < headStartEnds_) return;
     if (started_.exchange(true)) return;
     prepareTheProcess();  // not before: a sampler done within the head start runs as alone
-    try {
-      const bool apart = cores_.keepApart();
-      thread_ = std::thread([this, apart] {
-        if (apart) cores_.moveHere();
-        run();
-      });
-    } catch (const std::system_error&) {  // no room for a thread's stack: the memory limit
-      failure_ = std::make_exception_ptr(std::bad_alloc());
-      ended_ = true;
-    }
+    pthread_attr_t attr;
+    if (pthread_attr_init(&attr) != 0) return noThread();
+    const bool apart = cores_.plan();
+    if (apart) pthread_attr_setaffinity_np(&attr, sizeof(cpu_set_t), &cores_.others());
+    const int created = pthread_create(
+        &thread_, &attr,
+        [](void* self) -> void* {
+          static_cast<Challenger*>(self)->run();
+          return nullptr;
+        },
+        this);
+    pthread_attr_destroy(&attr);
+    if (created != 0) return noThread();
+    threadStarted_ = true;
+    if (apart) cores_.keepHere();
   }
   /// MMS on the calling thread, for the time left, if it has not started: the sampler gave up
   /// before the head start was over.
@@ -163,7 +174,8 @@ class Challenger final : public Termination::Watcher {
   /// Waits for MMS to finish: found, out of time, cancelled or ended. On the sampler's thread.
   void join() {
     cores_.restore();
-    if (thread_.joinable()) thread_.join();
+    if (threadStarted_) pthread_join(thread_, nullptr);
+    threadStarted_ = false;
   }
   /// Rethrows what MMS threw.
   void rethrow() const {
@@ -173,6 +185,11 @@ class Challenger final : public Termination::Watcher {
   double foundAt() const { return ownAt_; }
 
  private:
+  /// No room for a thread's stack (the memory limit): MMS does not run.
+  void noThread() {
+    failure_ = std::make_exception_ptr(std::bad_alloc());
+    ended_ = true;
+  }
   void run() {
     try {
       if (!mms_ && !race_()) mms_ = make_();
@@ -194,7 +211,8 @@ class Challenger final : public Termination::Watcher {
   std::atomic<bool> started_{false};
   const Termination race_;
   const Termination::Clock::time_point headStartEnds_;
-  std::thread thread_;
+  pthread_t thread_{};
+  bool threadStarted_ = false;
   CoresApart cores_;
   PlanResult own_;
   double ownAt_ = std::numeric_limits<double>::infinity();
