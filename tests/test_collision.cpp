@@ -173,6 +173,48 @@ TEST(CollisionChecker, RobotsDistanceIsTheNearestEdgePairOrTheBound) {
   EXPECT_GT(bounded, 500);
 }
 
+// A robot's clearance against every pair of robot and obstacle edges and the bounds' sides;
+// with a bound it is the clearance when below the bound and the bound otherwise, naming the
+// same nearest obstacle (the certifier's shortcut for far obstacles).
+TEST(CollisionChecker, ClearanceIsTheNearestEdgePairOrTheBound) {
+  const Scene s = benchmarkScene(7);
+  const CollisionChecker checker(s);
+  Random rng(29);
+  const Box& b = s.bounds;
+  int free = 0, bounded = 0, obstacleNearest = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const Pose p{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax),
+                 rng.uniform(-M_PI, M_PI)};
+    if (!checker.robotFree(0, p)) continue;
+    ++free;
+    const Ring a = placedRing(checker.shrunkShape(0), p);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Vec2 v : a)
+      nearest = std::min({nearest, v.x - b.xmin, b.xmax - v.x, v.y - b.ymin, b.ymax - v.y});
+    for (const Ring& o : s.obstacles)
+      for (size_t u = 0; u < a.size(); ++u)
+        for (size_t w = 0; w < o.size(); ++w)
+          nearest = std::min(nearest, segmentSegmentDistance(a[u], a[(u + 1) % a.size()], o[w],
+                                                             o[(w + 1) % o.size()]));
+    const CollisionChecker::Clearance c = checker.robotClearance(0, p);
+    ASSERT_NEAR(c.distance, std::max(0.0, nearest), 1e-12) << "placement " << i;
+    obstacleNearest += c.nearest.kind == Contact::Kind::Obstacle;
+    const double bound = rng.uniform(0, 2 * c.distance + 0.1);
+    const CollisionChecker::Clearance withBound = checker.robotClearance(0, p, bound);
+    if (c.distance < bound) {
+      EXPECT_EQ(withBound.distance, c.distance) << "placement " << i;
+      EXPECT_EQ(withBound.nearest.kind, c.nearest.kind) << "placement " << i;
+      EXPECT_EQ(withBound.nearest.index, c.nearest.index) << "placement " << i;
+    } else {
+      ++bounded;
+      EXPECT_EQ(withBound.distance, bound) << "placement " << i;
+    }
+  }
+  EXPECT_GT(free, 500);
+  EXPECT_GT(bounded, 100);
+  EXPECT_GT(obstacleNearest, 100);
+}
+
 TEST(CollisionChecker, ExactContactsAreFreeAndPenetrationIsNot) {
   Scene s;
   s.bounds = {0, 0, 10, 10};
