@@ -146,21 +146,17 @@ class Challenger final : public Termination::Watcher {
     if (started_.load(std::memory_order_relaxed) || now < headStartEnds_) return;
     if (started_.exchange(true)) return;
     prepareTheProcess();  // not before: a sampler done within the head start runs as alone
-    pthread_attr_t attr;
-    if (pthread_attr_init(&attr) != 0) return noThread();
     const bool apart = cores_.plan();
-    if (apart) pthread_attr_setaffinity_np(&attr, sizeof(cpu_set_t), &cores_.others());
-    const int created = pthread_create(
-        &thread_, &attr,
-        [](void* self) -> void* {
-          static_cast<Challenger*>(self)->run();
-          return nullptr;
-        },
-        this);
-    pthread_attr_destroy(&attr);
-    if (created != 0) return noThread();
-    threadStarted_ = true;
-    if (apart) cores_.keepHere();
+    bool created = apart && start(&cores_.others());
+    // Cores that cannot be set (a cpuset changed under the process) leave them to the scheduler.
+    if (created)
+      cores_.keepHere();
+    else
+      created = start(nullptr);
+    if (!created) {  // no room for a thread's stack: the memory limit
+      failure_ = std::make_exception_ptr(std::bad_alloc());
+      ended_ = true;
+    }
   }
   /// MMS on the calling thread, for the time left, if it has not started: the sampler gave up
   /// before the head start was over.
@@ -185,10 +181,21 @@ class Challenger final : public Termination::Watcher {
   double foundAt() const { return ownAt_; }
 
  private:
-  /// No room for a thread's stack (the memory limit): MMS does not run.
-  void noThread() {
-    failure_ = std::make_exception_ptr(std::bad_alloc());
-    ended_ = true;
+  /// MMS's thread, on `cores` if given; whether it started.
+  bool start(const cpu_set_t* cores) {
+    pthread_attr_t attr;
+    if (pthread_attr_init(&attr) != 0) return false;
+    bool ok = !cores || pthread_attr_setaffinity_np(&attr, sizeof(cpu_set_t), cores) == 0;
+    ok = ok && pthread_create(
+                   &thread_, &attr,
+                   [](void* self) -> void* {
+                     static_cast<Challenger*>(self)->run();
+                     return nullptr;
+                   },
+                   this) == 0;
+    pthread_attr_destroy(&attr);
+    threadStarted_ = ok;
+    return ok;
   }
   void run() {
     try {
