@@ -36,6 +36,16 @@ Scene benchmarkScene(uint64_t seed) {
   return parseScene(sceneToJson(randomPolygonsScene(st)), "generated");
 }
 
+// The brute-force reference for distances: every edge of a against every edge of b.
+double nearestEdgePair(const Ring& a, const Ring& b) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (size_t u = 0; u < a.size(); ++u)
+    for (size_t v = 0; v < b.size(); ++v)
+      nearest = std::min(nearest, segmentSegmentDistance(a[u], a[(u + 1) % a.size()], b[v],
+                                                         b[(v + 1) % b.size()]));
+  return nearest;
+}
+
 // Two random star-shaped 9-gons in an empty room.
 Scene twoStarRobots(Random& rng) {
   Scene s;
@@ -155,11 +165,7 @@ TEST(CollisionChecker, RobotsDistanceIsTheNearestEdgePairOrTheBound) {
     const Pose p{rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-M_PI, M_PI)};
     const Pose q{rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-M_PI, M_PI)};
     const Ring a = placedRing(checker.shrunkShape(0), p), b = placedRing(checker.shrunkShape(1), q);
-    double nearest = std::numeric_limits<double>::infinity();
-    for (size_t u = 0; u < a.size(); ++u)
-      for (size_t v = 0; v < b.size(); ++v)
-        nearest = std::min(nearest, segmentSegmentDistance(a[u], a[(u + 1) % a.size()], b[v],
-                                                           b[(v + 1) % b.size()]));
+    double nearest = nearestEdgePair(a, b);
     if (ringsIntersect(a, boundingBox(a), b, boundingBox(b))) nearest = 0;
     const double d = checker.robotsDistance(0, p, 1, q);
     ASSERT_NEAR(d, nearest, 1e-12) << "placement " << i;
@@ -191,11 +197,7 @@ TEST(CollisionChecker, ClearanceIsTheNearestEdgePairOrTheBound) {
     double nearest = std::numeric_limits<double>::infinity();
     for (const Vec2 v : a)
       nearest = std::min({nearest, v.x - b.xmin, b.xmax - v.x, v.y - b.ymin, b.ymax - v.y});
-    for (const Ring& o : s.obstacles)
-      for (size_t u = 0; u < a.size(); ++u)
-        for (size_t w = 0; w < o.size(); ++w)
-          nearest = std::min(nearest, segmentSegmentDistance(a[u], a[(u + 1) % a.size()], o[w],
-                                                             o[(w + 1) % o.size()]));
+    for (const Ring& o : s.obstacles) nearest = std::min(nearest, nearestEdgePair(a, o));
     const CollisionChecker::Clearance c = checker.robotClearance(0, p);
     ASSERT_NEAR(c.distance, std::max(0.0, nearest), 1e-12) << "placement " << i;
     obstacleNearest += c.nearest.kind == Contact::Kind::Obstacle;
