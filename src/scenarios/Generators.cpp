@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scenarios/Witness.h"
+
 namespace mms {
 
 Ring randomStarPolygon(Random& rng, Vec2 center, double rmin, double rmax, int n) {
@@ -414,18 +416,26 @@ Scene openClutterScene(uint64_t seed) {
     scene.robots.push_back(robot);
   }
   const int count = 20 + int(rng.below(11));
-  for (int k = 0, attempts = 0; k < count && attempts < 10000; ++attempts) {
-    const double radius = rng.uniform(0.6, 1.6);
-    const Vec2 c{rng.uniform(-half + radius, half - radius),
-                 rng.uniform(-half + radius, half - radius)};
-    if (!clear(c, radius)) continue;
-    scene.obstacles.push_back(randomConvex(rng, c, radius, 3 + int(rng.below(5))));
-    if (std::abs(area(scene.obstacles.back())) < 0.05 * radius * radius)
-      scene.obstacles.pop_back();  // a sliver: draw again
-    else
-      ++k;
+  // Overlapping obstacles can wall a start or a goal in: draw them again (the stream goes on,
+  // so a scene that passes at once is what it was before this check) until the robots'
+  // circumscribed discs find a way, one robot after the other. Every tenth failed draw places
+  // one obstacle fewer, so the loop ends even where few draws would pass.
+  for (int draw = 0;; ++draw) {
+    scene.obstacles.clear();
+    const int wanted = std::max(0, count - draw / 10);
+    for (int k = 0, attempts = 0; k < wanted && attempts < 10000; ++attempts) {
+      const double radius = rng.uniform(0.6, 1.6);
+      const Vec2 c{rng.uniform(-half + radius, half - radius),
+                   rng.uniform(-half + radius, half - radius)};
+      if (!clear(c, radius)) continue;
+      scene.obstacles.push_back(randomConvex(rng, c, radius, 3 + int(rng.below(5))));
+      if (std::abs(area(scene.obstacles.back())) < 0.05 * radius * radius)
+        scene.obstacles.pop_back();  // a sliver: draw again
+      else
+        ++k;
+    }
+    if (gridWitness(scene) || wanted == 0) return scene;
   }
-  return scene;
 }
 
 namespace {

@@ -72,7 +72,9 @@ Scene discsRoomScene(uint64_t seed, size_t count = 10);
 /// cross a square room among 20-30 random convex obstacles (3-7 vertices, placed uniformly,
 /// overlaps allowed). Robot 0 goes from the left edge to the right, robot 1 the other way;
 /// starts and goals keep the robots' circumscribed discs clear of every obstacle's and of each
-/// other's, so they are free. Wide passages: what sampling planners do well.
+/// other's, so they are free. Every scene has a solution: obstacles that leave the grid witness
+/// (`Witness.h`) no way are drawn again (2 seeds of 1-300). Wide passages: what sampling planners
+/// do well.
 Scene openClutterScene(uint64_t seed);
 
 /// A bend: a plank (a thin rectangle) goes from one arm of an L-shaped corridor to the other.
