@@ -229,7 +229,10 @@ int plan(const PlanArgs& a) {
                         (summaries.size() == 1 ? summaries[0] : summaries).dump(1) + "\n");
   // Freeing a roadmap of a million manifolds takes seconds past the limit; the process is
   // about to exit and the system takes the memory back at once.
-  if (params.exitsAfterRun) (void)planner.release();
+  if (params.exitsAfterRun) {
+    planner->finishBackgroundWork();  // no thread of it may run while the process exits
+    (void)planner.release();
+  }
   return exitCode;
 }
 

@@ -105,6 +105,12 @@ class Planner {
   /// path checker has certified it.
   virtual PlanResult solve(const Termination& stop, const Progress& progress = {}) = 0;
 
+  /// Returns once what the last solve() left running has stopped: the portfolio ("auto")
+  /// returns its sampler's path at once and leaves MMS to stop at its next check (an exact
+  /// step: 0.1-2 ms) on the other core. The next solve(), setQuery() and the destructor wait
+  /// for it too; a program that exits without destroying its planner calls this first.
+  virtual void finishBackgroundWork() {}
+
   /// A new start and goal for every robot, keeping what was built (multi-query planners);
   /// false when the planner answers one query only.
   virtual bool setQuery(const Config& start, const Config& goal) {

@@ -35,6 +35,14 @@ class Termination {
     t.ended_ = ended;
     return t;
   }
+  /// This condition with `cancel` as its cancel flag: for work that may outlive the caller's
+  /// flag (the portfolio's losing member, left to stop after solve() returned), to which the
+  /// caller passes its flag on while it waits.
+  Termination cancelledBy(const std::atomic<bool>* cancel) const {
+    Termination t = *this;
+    t.cancel_ = cancel;
+    return t;
+  }
   /// This condition, telling `watcher` of each check.
   Termination watchedBy(Watcher* watcher) const {
     Termination t = *this;

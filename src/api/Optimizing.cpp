@@ -78,6 +78,8 @@ class Optimizing final : public Planner {
     return r;
   }
 
+  void finishBackgroundWork() override { inner_->finishBackgroundWork(); }
+
   bool setQuery(const Config& start, const Config& goal) override {
     if (!inner_->setQuery(start, goal)) return false;
     for (size_t i = 0; i < scene_.robots.size(); ++i) {

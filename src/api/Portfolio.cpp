@@ -14,6 +14,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <functional>
 #include <limits>
@@ -121,17 +122,24 @@ class CoresApart {
 /// obstacles, arrangements) beside a 2 ms sampler slowed it by 5-8 % on the bends (seeds 1-10,
 /// median per scene), and a process with a second thread pays for atomic reference counts and
 /// locked allocation in every shared pointer and malloc of the sampler.
+///
+/// When the sampler wins, MMS's thread is left to stop on its own: it checks the race's end
+/// between exact steps, and the step it is in took 0.1-2 ms (mean 0.5 ms over 36 open-clutter
+/// and discs-swap races), a sixth of the whole race on open scenes. So that thread reads
+/// nothing of the caller's after solve() returns: its own cancel flag (the caller's is passed
+/// on while the caller waits), its own clock, and progress reports that stop at the return.
 class Challenger final : public Termination::Watcher {
  public:
   using Maker = std::function<std::unique_ptr<Planner>()>;
-  /// `mms`: the MMS planner of earlier queries, or null (`make` makes it when it starts).
+  /// `mms`: the MMS planner of earlier queries, or null (`make` makes it when it starts); both
+  /// must outlive this.
   Challenger(std::unique_ptr<Planner>& mms, const Maker& make, const Termination& stop,
-             const Planner::Progress& progress, const Stopwatch& clock)
+             const Planner::Progress& progress)
       : mms_(mms),
         make_(make),
-        progress_(progress),
-        clock_(clock),
+        progress_(&progress),
         race_(stop.endingAlsoOn(&ended_)),
+        apart_(race_.cancelledBy(&cancelled_)),
         headStartEnds_(Termination::Clock::now() + kHeadStart) {}
   ~Challenger() {
     end();
@@ -142,6 +150,7 @@ class Challenger final : public Termination::Watcher {
 
   /// The race's condition: the caller's, ending also once either member has finished.
   const Termination& race() const { return race_; }
+  const Stopwatch& clock() const { return clock_; }
   void onCheck(Termination::Clock::time_point now) override {
     if (started_.load(std::memory_order_relaxed) || now < headStartEnds_) return;
     if (started_.exchange(true)) return;
@@ -163,13 +172,31 @@ class Challenger final : public Termination::Watcher {
   void runHere() {
     if (started_.exchange(true)) return;
     prepareTheProcess();
-    run();
+    run(race_);
   }
   /// Ends the race: MMS stops at its next check.
   void end() { ended_ = true; }
-  /// Waits for MMS to finish: found, out of time, cancelled or ended. On the sampler's thread.
+  /// On the sampler's thread, once it is done: its cores back to it.
+  void restoreCores() { cores_.restore(); }
+  /// Whether MMS has finished (or never started); its result is then final.
+  bool finished() {
+    const std::lock_guard lock(doneMutex_);
+    return !threadStarted_ || done_;
+  }
+  /// Waits for MMS to finish, passing the caller's cancel flag on. On the sampler's thread.
+  void await(const Termination& stop) {
+    if (!threadStarted_) return;
+    std::unique_lock lock(doneMutex_);
+    do {
+      if (stop.cancelled()) cancelled_ = true;
+    } while (!doneChanged_.wait_for(lock, std::chrono::milliseconds(5), [&] { return done_; }));
+  }
+  /// No more progress reports: the caller's function may be gone once solve() returns.
+  void mute() {
+    const std::lock_guard lock(progressMutex_);
+    progress_ = nullptr;
+  }
   void join() {
-    cores_.restore();
     if (threadStarted_) pthread_join(thread_, nullptr);
     threadStarted_ = false;
   }
@@ -189,7 +216,8 @@ class Challenger final : public Termination::Watcher {
     ok = ok && pthread_create(
                    &thread_, &attr,
                    [](void* self) -> void* {
-                     static_cast<Challenger*>(self)->run();
+                     auto* me = static_cast<Challenger*>(self);
+                     me->run(me->apart_);
                      return nullptr;
                    },
                    this) == 0;
@@ -197,29 +225,44 @@ class Challenger final : public Termination::Watcher {
     threadStarted_ = ok;
     return ok;
   }
-  void run() {
+  void run(const Termination& stop) {
+    const Planner::Progress relay = [this](const PlanStatistics& s) {
+      const std::lock_guard lock(progressMutex_);
+      if (progress_ && *progress_) (*progress_)(s);
+    };
     try {
-      if (!mms_ && !race_()) mms_ = make_();
-      if (!race_()) {
-        own_ = mms_->solve(race_, progress_);
+      if (!mms_ && !stop()) mms_ = make_();
+      if (!stop()) {
+        own_ = mms_->solve(stop, relay);
         if (own_.found()) ownAt_ = clock_.seconds();
       }
     } catch (...) {
       failure_ = std::current_exception();
     }
     ended_ = true;
+    {
+      const std::lock_guard lock(doneMutex_);
+      done_ = true;
+    }
+    doneChanged_.notify_all();
   }
 
   std::unique_ptr<Planner>& mms_;
   const Maker& make_;
-  const Planner::Progress& progress_;
-  const Stopwatch& clock_;
+  std::mutex progressMutex_;
+  const Planner::Progress* progress_;  // null once muted
+  const Stopwatch clock_;
   std::atomic<bool> ended_{false};
+  std::atomic<bool> cancelled_{false};  // the caller's flag, passed on while it waits
   std::atomic<bool> started_{false};
-  const Termination race_;
+  const Termination race_;   // the sampler's, and MMS's when it runs on the caller's thread
+  const Termination apart_;  // MMS's on its own thread
   const Termination::Clock::time_point headStartEnds_;
   pthread_t thread_{};
   bool threadStarted_ = false;
+  std::mutex doneMutex_;
+  std::condition_variable doneChanged_;
+  bool done_ = false;
   CoresApart cores_;
   PlanResult own_;
   double ownAt_ = std::numeric_limits<double>::infinity();
@@ -233,33 +276,49 @@ class Portfolio : public Planner {
       : scene_(scene),
         makeMms_(std::move(makeMms)),
         samplerParams_{params.seed, {}, false, params.exitsAfterRun} {}
+  ~Portfolio() override { finishBackgroundWork(); }
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
+    finishBackgroundWork();  // the last race's MMS, which this one may use again
     const std::unique_ptr<Planner> sampler = makePlanner(kSampler, scene_, samplerParams_);
     if (!makeMms_) return named(sampler->solve(stop, progress), kSampler);
-    const Stopwatch clock;
     // The sampler on this thread, where the memory is warm; MMS joins it after the head start.
-    Challenger challenger(mms_, makeMms_, stop, progress, clock);
-    PlanResult sampled = sampler->solve(challenger.race().watchedBy(&challenger));
+    auto challenger = std::make_unique<Challenger>(mms_, makeMms_, stop, progress);
+    const Stopwatch& clock = challenger->clock();
+    PlanResult sampled = sampler->solve(challenger->race().watchedBy(challenger.get()));
     const double sampledAt = clock.seconds();
+    challenger->restoreCores();
+    if (sampled.found() && !challenger->finished()) {
+      // Won outright: MMS stops in the background (finishBackgroundWork).
+      challenger->end();
+      challenger->mute();
+      sampled.stats.seconds = clock.seconds();
+      running_ = std::move(challenger);
+      return named(std::move(sampled), kSampler);
+    }
     // Without a path (none in its time, or one the certifier refused) the sampler leaves the
     // rest of the time to MMS.
     if (sampled.found())
-      challenger.end();
+      challenger->end();
     else
-      challenger.runHere();
-    challenger.join();
-    challenger.rethrow();
-    PlanResult& own = challenger.result();
-    const bool samplerWon = sampled.found() && (!own.found() || sampledAt < challenger.foundAt());
+      challenger->runHere();
+    challenger->await(stop);
+    challenger->join();
+    challenger->mute();
+    challenger->rethrow();
+    PlanResult& own = challenger->result();
+    const bool samplerWon = sampled.found() && (!own.found() || sampledAt < challenger->foundAt());
     PlanResult out = samplerWon ? std::move(sampled) : std::move(own);
     if (!out.found() && stop.cancelled()) out.status = PlanStatus::Cancelled;
     out.stats.seconds = clock.seconds();
     return named(std::move(out), samplerWon ? kSampler : "mms");
   }
 
+  void finishBackgroundWork() override { running_.reset(); }
+
   bool setQuery(const Config& start, const Config& goal) override {
     if (!makeMms_) return false;
+    finishBackgroundWork();
     if (!mms_) mms_ = makeMms_();  // multi-query: MMS's roadmap serves the next queries too
     if (!mms_->setQuery(start, goal)) return false;
     for (size_t i = 0; i < scene_.robots.size(); ++i) {
@@ -279,6 +338,7 @@ class Portfolio : public Planner {
   Challenger::Maker makeMms_;
   std::unique_ptr<Planner> mms_;
   PlannerParams samplerParams_;
+  std::unique_ptr<Challenger> running_;  // a lost race's MMS, stopping; declared last: it uses mms_
 };
 
 }  // namespace
