@@ -54,10 +54,12 @@ TEST(GridWitness, NoneWhenTheGoalIsWalledInAndACertifiedPathThroughADoor) {
   const CollisionChecker checker(closed);
   ASSERT_TRUE(checker.isFree(startConfig(closed)));
   ASSERT_TRUE(checker.isFree(goalConfig(closed)));
-  EXPECT_FALSE(gridWitness(closed));
+  // 128 cells across: every pose of the closed scene is visited, and a grid that is coarser
+  // than the default still sees the door.
+  EXPECT_FALSE(gridWitness(closed, 128));
   // A door wider than the square's side but narrower than its diagonal: it passes square on.
   const Scene open = boxedGoal(1.2);
-  const auto path = gridWitness(open);
+  const auto path = gridWitness(open, 128);
   ASSERT_TRUE(path);
   expectCertified(open, *path);
 }
@@ -86,7 +88,7 @@ TEST(GridWitness, RobotsTakeTheirTurnsInTheOrderThatWorks) {
   // With robot 1's goal in the corridor short of robot 0's, robot 1 would have to move twice
   // (out of the way, then back): beyond a witness in which each robot moves once.
   s.robots[1].goal = {7, 2, 0};
-  EXPECT_FALSE(gridWitness(s));
+  EXPECT_FALSE(gridWitness(s, 128));
 }
 
 TEST(GridWitness, EveryOpenClutterSceneHasOneThatPassesThePathChecker) {
