@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (clang, ASan + UBSan) in build-fuzz/ and fuzzes each of them.
+# Builds the libFuzzer targets (clang, ASan + UBSan) in build-fuzz/ and fuzzes each of them,
+# as many at once as there are cores.
 #   scripts/fuzz.sh                 60 s per target (the CI smoke run)
 #   scripts/fuzz.sh --seconds S     S seconds per target
 #   scripts/fuzz.sh --runs N        N executions per target (e.g. 10000000 before a release)
@@ -25,24 +26,42 @@ cmake --build build-fuzz -j"$(nproc)" --target FuzzScene FuzzPath FuzzDiscopygal
 
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 mkdir -p build-fuzz/crashes
-status=0
-for pair in $targets; do
-  target=${pair%%:*} corpus=${pair##*:}
+# One target: its summary line on stdout, or the failure and the log's tail on stderr.
+fuzz_one() {
+  local target=${1%%:*} corpus=${1##*:}
   # JSON readers get the JSON dictionary; the INI and XML readers find their tokens alone.
-  dict=()
+  local dict=()
   case $corpus in scene | path | discopygal | queries) dict=(-dict=fuzz/json.dict) ;; esac
   mkdir -p "build-fuzz/corpus/$corpus"
-  log="build-fuzz/$target.log"
+  local log="build-fuzz/$target.log"
   if ! "build-fuzz/$target" "${limit[@]}" -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
       "${dict[@]}" -artifact_prefix="build-fuzz/crashes/$target-" -print_final_stats=1 \
       "build-fuzz/corpus/$corpus" "fuzz/corpus/$corpus" >"$log" 2>&1; then
     echo "fuzz: $target FAILED; input in build-fuzz/crashes/, log $log:" >&2
     tail -n 40 "$log" >&2
-    status=1
-    continue
+    return 1
   fi
+  local runs secs
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
   secs=$(sed -n 's/^stat::.*//; s/^Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log" | tail -n 1)
   echo "fuzz: $target: ${runs:-?} executions in ${secs:-?} s, no crash (corpus $(ls "build-fuzz/corpus/$corpus" | wc -l) inputs)"
+}
+# As many targets at once as there are cores: each fuzzer is one process on one core.
+status=0
+pids=()
+for pair in $targets; do
+  while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do sleep 1; done
+  fuzz_one "$pair" >"build-fuzz/${pair%%:*}.out" 2>&1 &
+  pids+=("$!")
+done
+i=0
+for pair in $targets; do
+  if wait "${pids[$i]}"; then
+    cat "build-fuzz/${pair%%:*}.out"
+  else
+    status=1
+    cat "build-fuzz/${pair%%:*}.out" >&2
+  fi
+  i=$((i + 1))
 done
 exit $status

@@ -121,8 +121,9 @@ TEST(Portfolio, BothMembersStopAtTheLimit) {
 TEST(Portfolio, ARefusedSamplerPathLeavesTheTimeToMms) {
   const Scene scene = openClutterScene(100);
   const PlanResult alone = makePlanner("rrtconnect", scene)->solve(Termination(10));
-  // Whether MMS has started when the refusal comes depends on the machine: five races.
-  for (int race = 0; race < 5; ++race) {
+  // Whether MMS has started when the refusal comes depends on the machine: five races (one
+  // under the sanitizers, where each takes MMS about 8 s).
+  for (int race = 0; race < test::seedsToRun(5); ++race) {
     const PlanResult r = makePlanner("auto", scene)->solve(Termination(60));
     ASSERT_EQ(r.status, PlanStatus::Found) << "race " << race;
     if (alone.status == PlanStatus::Uncertified) {
