@@ -312,3 +312,22 @@ TEST(PublicApi, PathFilesRoundTripAndCertify) {
   EXPECT_THROW(readPathFile(dir.file("bad.json", "{}"), s), InputError);
   EXPECT_THROW(readSceneFile(dir.file("bad-scene.json", "[1]")), InputError);
 }
+
+// A run cut short leaves a two-robot planner's base slices and start and goal subspaces part
+// built; solved again, the planner gives the path a fresh one gives (it used to report "not
+// found" at once, in the portfolio's races too, which end MMS wherever it is).
+TEST(Registry, TwoRobotMmsSolvedAgainAfterACutGivesAFreshRunsPath) {
+  const Scene scene = openClutterScene(6);
+  ASSERT_EQ(scene.robots.size(), 2u);
+  const PlanResult fresh = makePlanner("mms", scene)->solve(Termination(planSeconds(30)));
+  ASSERT_EQ(fresh.status, PlanStatus::Found);
+  const std::vector<double> cuts =
+      kSanitized ? std::vector<double>{0.05} : std::vector<double>{0.001, 0.004, 0.01, 0.03};
+  for (const double cut : cuts) {
+    const auto planner = makePlanner("mms", scene);
+    planner->solve(Termination(cut));
+    const PlanResult again = planner->solve(Termination(planSeconds(30)));
+    ASSERT_EQ(again.status, PlanStatus::Found) << "cut at " << cut << " s";
+    EXPECT_EQ(again.waypoints, fresh.waypoints) << "cut at " << cut << " s";
+  }
+}

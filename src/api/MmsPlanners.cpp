@@ -190,19 +190,32 @@ class OneRobotMms : public Planner {
 };
 
 // A two- or k-robot MMS planner behind the seam (one query: its start and goal are the scene's).
+// Each solve() after the first starts from a fresh planner: these planners build their base
+// slices and start and goal subspaces once per query, and a run that a limit cut short there
+// (or the portfolio's race, which ends MMS wherever it is) leaves them part built, so that
+// resuming found no start or goal and reported "not found" at once. Same seed, same result,
+// however often solve() is called.
 template <class P, class Settings, class Stats>
 class ManyRobotMms : public Planner {
  public:
   ManyRobotMms(const Scene& scene, const Settings& settings,
                std::map<std::string, double> parameters)
-      : planner_(scene, settings), parameters_(std::move(parameters)) {}
+      : scene_(scene),
+        settings_(settings),
+        planner_(std::make_unique<P>(scene, settings)),
+        parameters_(std::move(parameters)) {}
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
-    return planResultOf(planner_.solve(stop, progressOf<Stats>(progress)), parameters_);
+    if (solved_) planner_ = std::make_unique<P>(scene_, settings_);
+    solved_ = true;
+    return planResultOf(planner_->solve(stop, progressOf<Stats>(progress)), parameters_);
   }
 
  private:
-  P planner_;
+  Scene scene_;
+  Settings settings_;
+  std::unique_ptr<P> planner_;
+  bool solved_ = false;
   std::map<std::string, double> parameters_;
 };
 using TwoRobotMms = ManyRobotMms<TwoRobotPlanner, TwoRobotSettings, TwoRobotStats>;
