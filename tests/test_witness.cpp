@@ -92,6 +92,14 @@ TEST(GridWitness, RobotsTakeTheirTurnsInTheOrderThatWorks) {
   EXPECT_FALSE(gridWitness(s, 128));
 }
 
+TEST(GridWitness, RobotsThatOnlyTranslateKeepTheirAngle) {
+  const Scene s = discsRoomScene(1, 4);
+  ASSERT_EQ(s.robots[0].motion, Motion::Translate);
+  const auto path = gridWitness(s);
+  ASSERT_TRUE(path);
+  expectCertified(s, *path);  // the checker refuses a translating robot that turns
+}
+
 TEST(GridWitness, EveryOpenClutterSceneHasOneThatPassesThePathChecker) {
   // 204 is a seed whose first draw walled a goal in (no planner solved it in 60 s); the
   // generator now draws that scene's obstacles again.

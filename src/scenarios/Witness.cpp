@@ -21,8 +21,15 @@ class PoseGrid {
     const Box& b = scene.bounds;
     nx_ = std::max(1, int(std::floor(b.width() / h)));
     ny_ = std::max(1, int(std::floor(b.height() / h)));
-    // An angle step moves no point further than a cell: radius * step <= h.
-    nk_ = std::clamp(int(std::ceil(2 * M_PI * checker.radius(robot) / h)), 4, 720);
+    // An angle step moves no point further than a cell: radius * step <= h. A robot that only
+    // translates keeps its start angle: one angle.
+    const Robot& r = scene.robots[robot];
+    if (r.motion == Motion::Translate) {
+      nk_ = 1;
+      theta0_ = r.start.theta;
+    } else {
+      nk_ = std::clamp(int(std::ceil(2 * M_PI * checker.radius(robot) / h)), 4, 720);
+    }
     step_ = 2 * M_PI / nk_;
     margin_ = 0.5 * h * (1 + 1e-6);
     clearance_.assign(size_t(nx_) * size_t(ny_) * size_t(nk_),
@@ -85,7 +92,8 @@ class PoseGrid {
   int index(int i, int j, int k) const { return (k * ny_ + j) * nx_ + i; }
   Pose pose(int n) const {
     const int i = n % nx_, j = (n / nx_) % ny_, k = n / (nx_ * ny_);
-    return {scene_.bounds.xmin + (i + 0.5) * h_, scene_.bounds.ymin + (j + 0.5) * h_, k * step_};
+    return {scene_.bounds.xmin + (i + 0.5) * h_, scene_.bounds.ymin + (j + 0.5) * h_,
+            theta0_ + k * step_};
   }
 
   // The robot's clearance at a grid pose to the bounds, the obstacles and the parked robots;
@@ -111,7 +119,7 @@ class PoseGrid {
     const Box& b = scene_.bounds;
     const int i0 = std::clamp(int(std::floor((p.x - b.xmin) / h_ - 0.5)), 0, nx_ - 1);
     const int j0 = std::clamp(int(std::floor((p.y - b.ymin) / h_ - 0.5)), 0, ny_ - 1);
-    const double turns = p.theta / step_;
+    const double turns = (p.theta - theta0_) / step_;
     const int k0 = int(std::floor(turns - nk_ * std::floor(turns / nk_)));
     for (int dk = 0; dk <= 1; ++dk)
       for (int dj = 0; dj <= 1; ++dj)
@@ -132,7 +140,7 @@ class PoseGrid {
   const CollisionChecker& checker_;
   size_t robot_;
   const Config& parked_;
-  double h_, step_ = 0, margin_ = 0;
+  double h_, step_ = 0, margin_ = 0, theta0_ = 0;
   int nx_ = 1, ny_ = 1, nk_ = 4;
   std::vector<float> clearance_;
 };

@@ -11,7 +11,8 @@ namespace mms {
 /// A path that solves `scene`, found on a grid of poses, or nothing. The robots move one at a
 /// time (scene order, then the reverse order), the others parked at their starts or goals; each
 /// steps between neighbouring poses of a grid over (x, y, theta) with `cellsAcross` cells over
-/// the bounds' longer side and angle steps that move no point of the robot further than a cell.
+/// the bounds' longer side and angle steps that move no point of the robot further than a cell
+/// (a robot that only translates keeps its angle).
 /// A pose is used only if the robot's clearance there exceeds half a step, which bounds how far
 /// any of its points moves to the nearer end of a step: every step is free as a continuous
 /// motion. Nothing means only that the grid found no way (a passage may be narrower than a
