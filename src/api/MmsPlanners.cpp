@@ -206,7 +206,10 @@ class ManyRobotMms : public Planner {
         parameters_(std::move(parameters)) {}
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
-    if (solved_) planner_ = std::make_unique<P>(scene_, settings_);
+    if (solved_) {
+      planner_.reset();  // not two roadmaps at once
+      planner_ = std::make_unique<P>(scene_, settings_);
+    }
     solved_ = true;
     return planResultOf(planner_->solve(stop, progressOf<Stats>(progress)), parameters_);
   }

@@ -36,12 +36,17 @@ class Optimizing final : public Planner {
         settings_(settings),
         parameters_(std::move(parameters)) {}
   // What a time limit cut is freed here, once no planner runs (util/Deferred.h).
-  ~Optimizing() override { freeDeferredIfIdle(); }
+  ~Optimizing() override {
+    inner_->finishBackgroundWork();  // what a lost race's MMS cuts is freed here too
+    freeDeferredIfIdle();
+  }
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
     const RunningSolve running;
     // What earlier runs' limits cut (this planner's last query, another thread's run) is freed
-    // at the start of this one, out of its budget instead of past it (util/Deferred.h).
+    // at the start of this one, out of its budget instead of past it (util/Deferred.h); the last
+    // race's MMS first stops cutting.
+    inner_->finishBackgroundWork();
     freeDeferred();
     PlanResult r = inner_->solve(stop, progress);
     for (const auto& [k, v] : parameters_) r.parameters[k] = v;
@@ -52,6 +57,7 @@ class Optimizing final : public Planner {
     r.stats.phases.emplace_back("optimize", total.seconds);
     const size_t restarts = size_t(parameters_.at("restarts"));
     if (restarts > 0) {
+      inner_->finishBackgroundWork();  // a restart's race gets both cores
       Stopwatch watch;
       size_t run = 0, improved = 0;
       Random seeds(seed_ ^ 0x7265737461727473ull);

@@ -139,9 +139,10 @@ class Challenger final : public Termination::Watcher {
         make_(make),
         progress_(&progress),
         race_(stop.endingAlsoOn(&ended_)),
-        apart_(race_.cancelledBy(&cancelled_)),
+        apart_(race_.cancelledBy(&cancelled_).watchedBy(nullptr)),
         headStartEnds_(Termination::Clock::now() + kHeadStart) {}
   ~Challenger() {
+    cores_.restore();  // the sampler threw: its cores back to it (after a normal end: nothing)
     end();
     join();
   }
@@ -305,7 +306,8 @@ class Portfolio : public Planner {
     challenger->await(stop);
     challenger->join();
     challenger->mute();
-    challenger->rethrow();
+    // What MMS threw (no memory left) matters only when the sampler has no path to give.
+    if (!sampled.found()) challenger->rethrow();
     PlanResult& own = challenger->result();
     const bool samplerWon = sampled.found() && (!own.found() || sampledAt < challenger->foundAt());
     PlanResult out = samplerWon ? std::move(sampled) : std::move(own);
