@@ -25,11 +25,8 @@
 namespace mms {
 namespace {
 
-Ring rect(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
 // Validated like a file: the loader must accept every scene here.
+using test::rect;
 using test::trueShapeOverlaps;
 
 Scene load(const Scene& s) { return parseScene(sceneToJson(s), s.name); }

@@ -14,9 +14,7 @@ using namespace mms;
 
 namespace {
 
-Ring rect(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
+using test::rect;
 
 Robot square(const std::string& name, double side, Pose start, Pose goal) {
   const double h = side / 2;

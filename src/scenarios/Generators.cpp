@@ -417,9 +417,9 @@ Scene openClutterScene(uint64_t seed) {
   }
   const int count = 20 + int(rng.below(11));
   // Overlapping obstacles can wall a start or a goal in: draw them again (the stream goes on,
-  // so a scene that passes at once is what it was before this check) until the robots'
-  // circumscribed discs find a way, one robot after the other. Every tenth failed draw places
-  // one obstacle fewer, so the loop ends even where few draws would pass.
+  // so a scene that passes at once is what it was before this check) until the grid witness
+  // finds a way for the robots, one after the other. Every tenth failed draw places one
+  // obstacle fewer, so the loop ends even where few draws would pass.
   for (int draw = 0;; ++draw) {
     scene.obstacles.clear();
     const int wanted = std::max(0, count - draw / 10);

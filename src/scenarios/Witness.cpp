@@ -96,8 +96,9 @@ class PoseGrid {
             theta0_ + k * step_};
   }
 
-  // The robot's clearance at a grid pose to the bounds, the obstacles and the parked robots;
-  // only whether it exceeds twice the margin matters, so nearer is all that is measured.
+  // The robot's clearance at a grid pose to the bounds, the obstacles and the parked robots,
+  // measured up to two cells: steps need more than half a cell, and an entry whose move is
+  // longer than two cells is refused (conservative, never unsafe).
   double clearance(int n) {
     float& memo = clearance_[size_t(n)];
     if (std::isnan(memo)) memo = float(measure(pose(n)));
