@@ -120,7 +120,7 @@ std::vector<ParamSpec> mmsParams() {
   const TwoRobotSettings two;
   auto both = [](double a, double b) {
     return a == b ? formatNumber(a)
-                  : formatNumber(a) + " for one robot, " + formatNumber(b) + " for two";
+                  : formatNumber(a) + " for one robot, " + formatNumber(b) + " for two or more";
   };
   return {
       {"threads", Type::Integer, 0, 256, double(one.threads),
@@ -129,15 +129,16 @@ std::vector<ParamSpec> mmsParams() {
            formatNumber(one.threads) + ")"},
       {"n-theta", Type::Integer, 1, 1e6, double(one.nTheta),
        "Angles sampled per robot (n_theta). One robot: slices in the first round, doubling each "
-       "round. Two robots or more: each robot's angle set (default " +
+       "round. Two robots or more: each robot's angle set besides its start and goal angles, "
+       "doubling each round (default " +
            both(double(one.nTheta), double(two.nTheta)) + ")"},
       {"n-lines", Type::Integer, 1, 1e7, double(one.nLines),
        "Lines (fixed positions, n_l). One robot: in the first round, doubling each round. Two "
        "robots or more: per subspace (default " +
            both(double(one.nLines), double(two.nLines)) + ")"},
       {"n-fixings", Type::Integer, 1, 1e6, double(two.nFixings),
-       "Two robots only: fixings per robot in the first round (n_f), doubling each round "
-       "(default " +
+       "Two robots only: fixings per robot in the first round (n_f), doubling each round once "
+       "each robot has 16 angles (default " +
            formatNumber(double(two.nFixings)) + ")"},
       {"expand-share", Type::Real, 0, 1, two.expandShare,
        "Two robots only: share of fixings drawn from free-space cells already reached from the "

@@ -292,7 +292,7 @@ KRobotResult KRobotPlanner::solveRounds(const Termination& stop,
   h.next = [&] {
     if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds) return false;
     grownAtRoundStart = grown_;
-    target *= 2;
+    if (!anglesFirst(sequenceAngles_, translates_)) target *= 2;
     for (size_t r = 0; r < k_; ++r)
       if (!translates_[r]) {
         const std::vector<double> thetas = angles_[r]->take(sequenceAngles_[r]);

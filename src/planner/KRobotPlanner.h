@@ -35,7 +35,9 @@ namespace mms {
 
 struct KRobotSettings {
   uint64_t seed = 1;
-  size_t nTheta = 16;   // angles of robot r: nTheta + r, in all subspaces where it moves
+  // Angles of robot r: nTheta + r besides its start and goal angles, in all subspaces where it
+  // moves; few, as for two robots (TwoRobotSettings::nTheta).
+  size_t nTheta = 2;
   size_t nLines = 128;  // random lines per subspace
   size_t nTuples = 8;   // tuples grown in the first round; doubles every round, with the angles
   // Share of growth points drawn near a vertex of their cell (a robot tucked into a corner, out

@@ -342,9 +342,10 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
   };
   h.next = [&] {
     if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds) return false;
-    // Grow both the fixings and the angle sets: a narrow passage may need the two robots'
-    // angles closer than the current sets offer (the Pacman's mouth and the square).
-    target *= 2;
+    // Grow the angle sets: a narrow passage may need the two robots' angles closer than the
+    // current sets offer (the Pacman's mouth and the square), or an angle the obstacles alone
+    // allow (an L through a gap). While a set is small the fixings wait (fewerAnglesThan).
+    if (!anglesFirst(sequenceAngles_, translates_)) target *= 2;
     for (size_t r = 0; r < 2; ++r)
       if (!translates_[r]) {
         const std::vector<double> thetas = angles_[r]->take(sequenceAngles_[r]);

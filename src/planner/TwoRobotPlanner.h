@@ -30,11 +30,17 @@ namespace mms {
 
 struct TwoRobotSettings {
   uint64_t seed = 1;
-  size_t nTheta = 16;   // n_theta: angles of robot 0 (robot 1: one more), in all its subspaces
+  // n_theta: angles of robot 0 (robot 1: one more) besides its start and goal angles, in all
+  // its subspaces. A subspace costs an overlay per angle, and the rotations a tight passage
+  // needs come from its lines and narrow-arc slices more than from the shared angles, which
+  // double every round: on the tuning seeds 2 took 0.4-0.8 of the time 16 took
+  // (docs/benchmarks.md).
+  size_t nTheta = 2;
   size_t nLines = 128;  // n_l: random lines per subspace
-  size_t nFixings = 8;  // n_f: fixings per robot in the first round; doubles every round
-  // Every round after the first also doubles n_theta (the new angles are the midpoints), so
-  // passages that need the robots' angles aligned closely are reached too.
+  // n_f: fixings per robot in the first round. Every round after the first doubles n_theta (the
+  // new angles are the midpoints), so passages that need the robots' angles aligned closely are
+  // reached too, and, once each rigid robot has 16 angles, n_f (anglesFirst in Rounds.h).
+  size_t nFixings = 8;
   // Share of a translating robot's fixings drawn from the free-space cells already reached
   // from the start or the goal (the rest uniform over the robot's free space among the obstacles).
   // Such a fixing always meets the subspace it came from, so the graph grows into passages where
