@@ -16,12 +16,11 @@ using namespace mms::test;
 namespace {
 
 KRobotResult plan(const Scene& s, uint64_t seed, size_t screen = KRobotSettings{}.screenCandidates,
-                  size_t maxRounds = 0, size_t nTheta = KRobotSettings{}.nTheta) {
+                  size_t maxRounds = 0) {
   KRobotSettings st;
   st.seed = seed;
   st.screenCandidates = screen;
   st.maxRounds = maxRounds;
-  st.nTheta = nTheta;
   return KRobotPlanner(s, st).solve(Termination(planSeconds(60)));
 }
 
@@ -131,10 +130,7 @@ TEST(KRobots, ScreenedGrowthPointsFindTheNicheWithLessWork) {
   for (const uint64_t seed : {2, 3, 6}) {
     const Scene s = nicheThreeScene(seed);
     for (const size_t screen : {size_t(16), size_t(1)}) {
-      // Sixteen angles a robot, where a subspace is dear. With the default two, unscreened runs
-      // still take about 4 times as long (median of niche seeds 1-10, planner seeds 1-3), but a
-      // run's time varies too much between seeds for three of them.
-      const KRobotResult r = plan(s, 1, screen, 0, 16);
+      const KRobotResult r = plan(s, 1, screen);
       ASSERT_EQ(r.status, PlanStatus::Found) << seed << " " << screen;
       work[screen == 1] += r.stats.manifolds.slices + r.stats.screenedPoses;
     }

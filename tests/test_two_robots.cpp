@@ -139,8 +139,9 @@ TEST(TwoRobots, CornerFixingsThatLeaveTheOtherRoomFindATightNicheSooner) {
       TwoRobotSettings st;
       st.seed = 1;
       // Sixteen angles a robot: every subspace costs as many overlays, so a fixing that holds a
-      // robot in the other's way is dear. With the default two, screening still halves the time
-      // (niche seeds 1-10, tight and roomy, planner seeds 1-3), but five runs vary too much.
+      // robot in the other's way is dear. With the default four, screening still takes a fifth of
+      // the time (niche seeds 1-10, tight and roomy, planner seeds 1-3), but five runs vary too
+      // much.
       st.nTheta = 16;
       st.cornerCandidates = candidates;
       const TwoRobotResult r = TwoRobotPlanner(s, st).solve(Termination(planSeconds(60)));

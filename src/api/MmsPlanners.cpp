@@ -118,9 +118,13 @@ enum Param { kThreads, kNTheta, kNLines, kNFixings, kExpandShare, kCoupled };
 std::vector<ParamSpec> mmsParams() {
   const MmsSettings one;
   const TwoRobotSettings two;
-  auto both = [](double a, double b) {
-    return a == b ? formatNumber(a)
-                  : formatNumber(a) + " for one robot, " + formatNumber(b) + " for two or more";
+  const KRobotSettings many;
+  // The defaults for one robot, two, and three or more, said once where they agree.
+  auto each = [](double a, double b, double c) {
+    if (a == b && b == c) return formatNumber(a);
+    if (b == c) return formatNumber(a) + " for one robot, " + formatNumber(b) + " for two or more";
+    return formatNumber(a) + " for one robot, " + formatNumber(b) + " for two, " + formatNumber(c) +
+           " for three or more";
   };
   return {
       {"threads", Type::Integer, 0, 256, double(one.threads),
@@ -131,11 +135,11 @@ std::vector<ParamSpec> mmsParams() {
        "Angles sampled per robot (n_theta). One robot: slices in the first round, doubling each "
        "round. Two robots or more: each robot's angle set besides its start and goal angles, "
        "doubling each round (default " +
-           both(double(one.nTheta), double(two.nTheta)) + ")"},
+           each(double(one.nTheta), double(two.nTheta), double(many.nTheta)) + ")"},
       {"n-lines", Type::Integer, 1, 1e7, double(one.nLines),
        "Lines (fixed positions, n_l). One robot: in the first round, doubling each round. Two "
        "robots or more: per subspace (default " +
-           both(double(one.nLines), double(two.nLines)) + ")"},
+           each(double(one.nLines), double(two.nLines), double(many.nLines)) + ")"},
       {"n-fixings", Type::Integer, 1, 1e6, double(two.nFixings),
        "Two robots only: fixings per robot in the first round (n_f), doubling each round once "
        "each robot has 16 angles (default " +

@@ -36,8 +36,10 @@ namespace mms {
 struct KRobotSettings {
   uint64_t seed = 1;
   // Angles of robot r: nTheta + r besides its start and goal angles, in all subspaces where it
-  // moves; few, as for two robots (TwoRobotSettings::nTheta).
-  size_t nTheta = 2;
+  // moves. Not as few as two robots' (TwoRobotSettings::nTheta): with 4, three robots in a
+  // niche corridor took 0.3-1 of the time, but a run with one robot translating failed 3 times
+  // in 10 at 10 s, against once with 16.
+  size_t nTheta = 16;
   size_t nLines = 128;  // random lines per subspace
   size_t nTuples = 8;   // tuples grown in the first round; doubles every round, with the angles
   // Share of growth points drawn near a vertex of their cell (a robot tucked into a corner, out

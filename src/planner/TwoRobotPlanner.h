@@ -33,9 +33,10 @@ struct TwoRobotSettings {
   // n_theta: angles of robot 0 (robot 1: one more) besides its start and goal angles, in all
   // its subspaces. A subspace costs an overlay per angle, and the rotations a tight passage
   // needs come from its lines and narrow-arc slices more than from the shared angles, which
-  // double every round: on the tuning seeds 2 took 0.4-0.8 of the time 16 took
-  // (docs/benchmarks.md).
-  size_t nTheta = 2;
+  // double every round: on the tuning seeds 4 took 0.3-0.8 of the time 16 took. 2 was faster
+  // still where the first round solves, but 2.5 times slower on the Viking helmet, whose
+  // passage needs an angle neither the start's nor the goal's (docs/benchmarks.md).
+  size_t nTheta = 4;
   size_t nLines = 128;  // n_l: random lines per subspace
   // n_f: fixings per robot in the first round. Every round after the first doubles n_theta (the
   // new angles are the midpoints), so passages that need the robots' angles aligned closely are
