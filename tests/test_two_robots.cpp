@@ -87,6 +87,34 @@ TEST(TwoRobots, StartAndGoalAnglesSlicedAndEarlyStop) {
   }
 }
 
+// While a robot has fewer than 16 angles a round adds angles, not fixings: a passage that needs
+// an angle the first round lacks is met by the angles, and every new fixing would cost an overlay
+// at each of them. A wall parts robot 0's start from its goal, so no round finds a path.
+TEST(TwoRobots, FixingsWaitWhileTheAngleSetsGrowToSixteen) {
+  Scene s;
+  s.bounds = {0, 0, 10, 10};
+  s.obstacles = {rect(4.5, 0, 5.5, 10)};
+  s.robots = {{"bar", rect(-0.5, -0.15, 0.5, 0.15), {2, 5, 0}, {8, 5, 0}},
+              {"box", rect(-0.3, -0.3, 0.3, 0.3), {2, 2, 0}, {2, 8, 0.5}}};
+  auto run = [&](size_t nTheta, size_t rounds) {
+    TwoRobotSettings st;
+    st.nTheta = nTheta;
+    st.maxRounds = rounds;
+    const TwoRobotResult r = TwoRobotPlanner(s, st).solve(Termination(planSeconds(60)));
+    EXPECT_EQ(r.status, PlanStatus::NotFound);
+    EXPECT_EQ(r.stats.rounds, rounds);
+    return r.stats;
+  };
+  // 4 angles: rounds 2 and 3 take them to 8 and 16 (9 and 17 from 5 for robot 1), no fixings.
+  const TwoRobotStats few1 = run(4, 1), few3 = run(4, 3);
+  EXPECT_EQ(few3.fixings, few1.fixings);
+  EXPECT_EQ(few3.subspaces, few1.subspaces);
+  EXPECT_GT(few3.manifolds.slices, 3 * few1.manifolds.slices);
+  // 16 angles from the start: every round doubles the fixings too.
+  const TwoRobotStats full1 = run(16, 1), full2 = run(16, 2);
+  for (size_t r = 0; r < 2; ++r) EXPECT_GT(full2.fixings[r], full1.fixings[r] + 4) << r;
+}
+
 // At tightness 0.98 the Pacman must turn round to within a fraction of a degree for the square
 // to pass through its mouth. Slices at the middles of narrow line arcs open that passage within
 // two rounds; the evenly spread angles alone do not (they found it in round 5 before).

@@ -344,7 +344,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds) return false;
     // Grow the angle sets: a narrow passage may need the two robots' angles closer than the
     // current sets offer (the Pacman's mouth and the square), or an angle the obstacles alone
-    // allow (an L through a gap). While a set is small the fixings wait (fewerAnglesThan).
+    // allow (an L through a gap). While a set is small the fixings wait (anglesFirst).
     if (!anglesFirst(sequenceAngles_, translates_)) target *= 2;
     for (size_t r = 0; r < 2; ++r)
       if (!translates_[r]) {
