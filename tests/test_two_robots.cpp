@@ -4,6 +4,7 @@
 
 #include "Support.h"
 #include "io/SceneIO.h"
+#include "planner/Rounds.h"
 #include "planner/TwoRobotPlanner.h"
 #include "scenarios/Generators.h"
 
@@ -105,13 +106,15 @@ TEST(TwoRobots, FixingsWaitWhileTheAngleSetsGrowToSixteen) {
     EXPECT_EQ(r.stats.rounds, rounds);
     return r.stats;
   };
-  // 4 angles: rounds 2 and 3 take them to 8 and 16 (9 and 17 from 5 for robot 1), no fixings.
-  const TwoRobotStats few1 = run(4, 1), few3 = run(4, 3);
+  // A quarter of the threshold (4 of 16): rounds 2 and 3 double the angles to it, no fixings.
+  const size_t few = kAnglesBeforeFixingsGrow / 4;
+  const TwoRobotStats few1 = run(few, 1), few3 = run(few, 3);
   EXPECT_EQ(few3.fixings, few1.fixings);
   EXPECT_EQ(few3.subspaces, few1.subspaces);
   EXPECT_GT(few3.manifolds.slices, 3 * few1.manifolds.slices);
-  // 16 angles from the start: every round doubles the fixings too.
-  const TwoRobotStats full1 = run(16, 1), full2 = run(16, 2);
+  // The threshold from the start: every round doubles the fixings too.
+  const TwoRobotStats full1 = run(kAnglesBeforeFixingsGrow, 1),
+                      full2 = run(kAnglesBeforeFixingsGrow, 2);
   for (size_t r = 0; r < 2; ++r) EXPECT_GT(full2.fixings[r], full1.fixings[r] + 4) << r;
 }
 

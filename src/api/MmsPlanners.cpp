@@ -8,6 +8,7 @@
 #include "mms/Errors.h"
 #include "planner/KRobotPlanner.h"
 #include "planner/MmsPlanner.h"
+#include "planner/Rounds.h"
 #include "planner/TwoRobotPlanner.h"
 #include "util/Parallel.h"
 
@@ -142,7 +143,8 @@ std::vector<ParamSpec> mmsParams() {
            each(double(one.nLines), double(two.nLines), double(many.nLines)) + ")"},
       {"n-fixings", Type::Integer, 1, 1e6, double(two.nFixings),
        "Two robots only: fixings per robot in the first round (n_f), doubling each round once "
-       "each robot has 16 angles (default " +
+       "each robot has " +
+           formatNumber(double(kAnglesBeforeFixingsGrow)) + " angles (default " +
            formatNumber(double(two.nFixings)) + ")"},
       {"expand-share", Type::Real, 0, 1, two.expandShare,
        "Two robots only: share of fixings drawn from free-space cells already reached from the "

@@ -82,8 +82,13 @@ RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from
   }
 }
 
+/// The angle count a rigid robot of a multi-robot planner reaches before its fixings grow too
+/// (anglesFirst); the help and docs read it from here.
+inline constexpr size_t kAnglesBeforeFixingsGrow = 16;
+
 /// Whether the next round of a planner for two robots or more grows only the robots' angle
-/// sets, keeping its fixings: while a rigid robot has fewer than 16 sequence angles (counted per
+/// sets, keeping its fixings: while a rigid robot has fewer than kAnglesBeforeFixingsGrow
+/// sequence angles (counted per
 /// robot in `angles`, `translates` marking those with none). A subspace costs an overlay per
 /// angle of its moving robot, so a first round with few angles is cheap; but a passage that
 /// needs an angle neither the start's nor the goal's (an L through a gap between obstacles) is
@@ -93,7 +98,7 @@ RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from
 template <class Counts, class Flags>
 bool anglesFirst(const Counts& angles, const Flags& translates) {
   for (size_t r = 0; r < angles.size(); ++r)
-    if (!translates[r] && angles[r] < 16) return true;
+    if (!translates[r] && angles[r] < kAnglesBeforeFixingsGrow) return true;
   return false;
 }
 
