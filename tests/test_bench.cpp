@@ -172,6 +172,11 @@ TEST(BenchCommand, RecordsRunsResumesShardsAndMerges) {
   r = runMms("bench " + common + " -o " + quote(dir.path("all")));
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("0 runs (4 already recorded)"), std::string::npos) << r.out;
+  // ... and says so as it starts, with when they were measured.
+  EXPECT_NE(r.err.find("resuming " + dir.path("all/runs.jsonl") +
+                       ": 4 of 4 runs recorded already, the newest started 20"),
+            std::string::npos)
+      << r.err;
   // The report says what was measured and how to measure it again.
   const std::string report = readFile(dir.path("all/report.md"));
   EXPECT_NE(report.find("limits per run: 10 s, 4096 MB"), std::string::npos) << report;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -272,6 +273,7 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
     done.insert(key(r));
     if (!r.solved()) ++failures[group(r)];
   };
+  double newest = 0;  // when the newest recorded run started
   if (fs::exists(runsFile)) {
     // A resumed benchmark must measure what the recorded runs measured: refuse other limits
     // or another mms, rather than mixing them in one table.
@@ -279,6 +281,7 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
     for (const Job& j : jobs) planned[key(j.record)] = &j;
     for (const RunRecord& r : readRuns(runsFile)) {
       count(r);
+      newest = std::max(newest, r.startedAt);
       const auto it = planned.find(key(r));
       if (it == planned.end()) continue;
       const RunRecord& now = it->second->record;
@@ -294,6 +297,24 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
         differs("--memory-limit", formatNumber(r.memoryLimitMb), formatNumber(now.memoryLimitMb));
       if (!r.version.empty() && r.version != now.version) differs("mms", r.version, now.version);
     }
+  }
+  // A folder kept from an earlier build resumes silently otherwise: the version need not change
+  // between builds, so say at once what is reused and when it was measured.
+  size_t reused = 0;
+  for (const Job& j : jobs) reused += done.count(key(j.record));
+  if (reused > 0) {
+    std::string when;
+    if (newest > 0) {
+      const std::time_t t = std::time_t(newest);
+      std::tm utc{};
+      char buf[32];
+      std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", gmtime_r(&t, &utc));
+      when = std::string(", the newest started ") + buf;
+    }
+    std::fprintf(stderr,
+                 "mms bench: resuming %s: %zu of %zu runs recorded already%s; give another "
+                 "output folder to measure them again\n",
+                 runsFile.c_str(), reused, jobs.size(), when.c_str());
   }
   if (!a.command.empty()) {
     std::ofstream log(a.output + "/commands.txt", std::ios::app);
