@@ -24,7 +24,8 @@ KRobotPlanner::KRobotPlanner(const Scene& scene, KRobotSettings settings)
       rng_(settings.seed),
       k_(scene.robots.size()),
       sequenceAngles_(k_, 0),
-      base_(k_) {
+      base_(k_),
+      reached_(k_) {
   for (size_t r = 0; r < k_; ++r) {
     translates_.push_back(scene_.robots[r].motion == Motion::Translate);
     worlds_.push_back(std::make_unique<SliceWorld>(contactScene_, r));
@@ -160,11 +161,22 @@ bool KRobotPlanner::leavesRoom(size_t robot, const Pose& p) {
 // the new tuple's subspace. Of up to `screenCandidates` such points (each in a cell drawn anew)
 // the first that leaves the others room is taken, else the last.
 void KRobotPlanner::grow(const Termination& stop) {
-  const std::vector<size_t>& cells = reachedCells();
-  if (cells.empty()) return;
+  if (!rescanReached()) return;
+  // A robot is drawn by its reached cells per angle, as if all had as many angles: with cells
+  // drawn alike, one that translates (one slice a subspace, against a rigid one's 18 or more)
+  // was seldom drawn, and the niche it had to wait in was found after seconds, not ms.
+  std::vector<double> weight(k_);
+  double total = 0;
+  for (size_t r = 0; r < k_; ++r)
+    total += weight[r] = double(reached_[r].size()) / double(base_[r].size());
   ++grown_;
   std::optional<std::pair<size_t, Anchor>> last;  // (subspace, the moved robot's anchor)
   for (size_t c = 0; c < settings_.screenCandidates; ++c) {
+    double u = rng_.uniform(0, total);
+    size_t robot = 0;
+    while (robot + 1 < k_ && (reached_[robot].empty() || u >= weight[robot])) u -= weight[robot++];
+    const std::vector<size_t>& cells = reached_[robot];
+    if (cells.empty()) continue;
     const size_t v = cells[rng_.below(cells.size())];
     const Roadmap::Entry& e = roadmap_.entryOf(v);
     const size_t group = e.group, angle = e.index, cell = roadmap_.cellOf(v);
@@ -193,6 +205,10 @@ void KRobotPlanner::grow(const Termination& stop) {
   towardsOtherSide(std::move(t), fromStart, stop);
 }
 
+size_t KRobotPlanner::movingAt(size_t v) const {
+  return subspaces_[roadmap_.entryOf(v).group]->moving();
+}
+
 bool KRobotPlanner::reached(size_t v) const {
   return from_ >= 0 && (roadmap_.graph().connected(v, size_t(from_)) ||
                         roadmap_.graph().connected(v, size_t(to_)));
@@ -203,20 +219,22 @@ void KRobotPlanner::collectCells(size_t firstNode) {
     const Roadmap::Entry& e = roadmap_.entryOf(v);
     if (&e.manifold->family() != &SliceManifold::kFamily || (e.index & Subspace::kLocal)) continue;
     cells_.push_back(v);
-    if (reached(v)) reached_.push_back(v);
+    if (reached(v)) reached_[movingAt(v)].push_back(v);
   }
 }
 
 // Cells join the start's or goal's component later too: rescan once the graph has grown by a
-// quarter (amortised constant per node).
-const std::vector<size_t>& KRobotPlanner::reachedCells() {
+// quarter (amortised constant per node). Returns whether any cell is reached.
+bool KRobotPlanner::rescanReached() {
   if (roadmap_.nodeCount() > reachedScan_ + reachedScan_ / 4) {
     reachedScan_ = roadmap_.nodeCount();
-    reached_.clear();
+    for (auto& cells : reached_) cells.clear();
     for (const size_t v : cells_)
-      if (reached(v)) reached_.push_back(v);
+      if (reached(v)) reached_[movingAt(v)].push_back(v);
   }
-  return reached_;
+  for (const auto& cells : reached_)
+    if (!cells.empty()) return true;
+  return false;
 }
 
 KRobotResult KRobotPlanner::finish(KRobotResult r, PlanStatus status) {
@@ -274,7 +292,7 @@ KRobotResult KRobotPlanner::solveRounds(const Termination& stop,
   size_t grownAtRoundStart = 0;
   RoundHooks h;
   h.begin = [&] {};
-  h.growing = [&] { return grown_ < grownAtRoundStart + target && !reachedCells().empty(); };
+  h.growing = [&] { return grown_ < grownAtRoundStart + target && rescanReached(); };
   h.complete = [&] { return grown_ >= grownAtRoundStart + target; };
   h.grow = [&] {
     grow(stop);

@@ -36,9 +36,10 @@ namespace mms {
 struct KRobotSettings {
   uint64_t seed = 1;
   // Angles of robot r: nTheta + r besides its start and goal angles, in all subspaces where it
-  // moves. Not as few as two robots' (TwoRobotSettings::nTheta): with 4, three robots in a
-  // niche corridor took 0.3-1 of the time, but a run with one robot translating failed 3 times
-  // in 10 at 10 s, against once with 16.
+  // moves. Not as few as two robots' (TwoRobotSettings::nTheta): on three robots in a niche
+  // corridor (seeds 1-10, one robot rigid or translating, 12 planner seeds) 4 and 8 took 0.45
+  // and 0.6 of the median time, but 1.03 and 0.82 of the total: runs that needed more tuples
+  // waited for the angles, up to 7.8 and 2.4 s where 16 took at most 0.8 s.
   size_t nTheta = 16;
   size_t nLines = 128;  // random lines per subspace
   size_t nTuples = 8;   // tuples grown in the first round; doubles every round, with the angles
@@ -100,7 +101,8 @@ class KRobotPlanner {
   void towardsOtherSide(Tuple t, bool fromStart, const Termination& stop);
   bool leavesRoom(size_t robot, const Pose& p);
   bool reached(size_t node) const;
-  const std::vector<size_t>& reachedCells();
+  size_t movingAt(size_t node) const;  // the robot that moves in the node's subspace
+  bool rescanReached();
   void collectCells(size_t firstNode);
   KRobotResult finish(KRobotResult r, PlanStatus status);
 
@@ -120,8 +122,10 @@ class KRobotPlanner {
   std::map<std::vector<double>, size_t> byHeld_;  // (moving, held poses) -> subspace
   Tuple start_, goal_;
   Roadmap roadmap_;
-  std::vector<size_t> cells_;    // slice-cell nodes at shared angles
-  std::vector<size_t> reached_;  // those connected to the start or goal
+  std::vector<size_t> cells_;  // slice-cell nodes at shared angles
+  // Per moving robot: those connected to the start or goal. Growth draws the robot first, so a
+  // robot with few angles (one that translates has one) is not drawn in proportion to its cells.
+  std::vector<std::vector<size_t>> reached_;
   size_t reachedScan_ = 0;
   size_t grown_ = 0;  // growth steps taken (a step may fail to draw a point)
   long from_ = -1, to_ = -1;
