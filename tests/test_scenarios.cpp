@@ -189,6 +189,38 @@ TEST(ScenarioNicheThree, EverySeedIsSolvedWithOneRobotWaitingInTheNiche) {
   EXPECT_EQ(sceneToJson(nicheThreeScene(4)), sceneToJson(nicheThreeScene(4)));
 }
 
+// `mms scenario ... --translate NAME`: the named robot only translates and the scene is named
+// apart; a robot that is not there, or one that turns from start to goal, is refused (exit 2,
+// one line naming the option and the robot).
+TEST(ScenarioTranslate, NamedRobotsOnlyTranslateAndTurningOnesAreRefused) {
+  test::TempDir dir;
+  const std::string file = dir.path("n.json");
+  const test::Outcome ok =
+      test::runMms("scenario niche-three --seed 3 --translate oncoming -o " + test::quote(file));
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  const Scene s = loadScene(file);
+  EXPECT_EQ(s.name, "niche-three-3-oncoming-translates");
+  const Scene plain = nicheThreeScene(3);
+  for (size_t r = 0; r < 3; ++r) {
+    EXPECT_EQ(s.robots[r].motion, r == 2 ? Motion::Translate : Motion::Rigid) << r;
+    EXPECT_EQ(s.robots[r].start.x, plain.robots[r].start.x) << r;
+    EXPECT_EQ(s.robots[r].goal.x, plain.robots[r].goal.x) << r;
+  }
+  const test::Outcome unknown =
+      test::runMms("scenario niche-three --translate nobody -o " + test::quote(file));
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_EQ(unknown.err,
+            "--translate: no robot 'nobody' in niche-three (robots: first, second, "
+            "oncoming)\n");
+  const test::Outcome turning =
+      test::runMms("scenario carry-turn --translate part -o " + test::quote(file));
+  EXPECT_EQ(turning.code, 2);
+  EXPECT_NE(turning.err.find("--translate: robot 'part' of carry-turn-1 turns from start to goal"),
+            std::string::npos)
+      << turning.err;
+  EXPECT_EQ(std::count(turning.err.begin(), turning.err.end(), '\n'), 1);
+}
+
 // Discs: valid scenes of translating discs, free and apart at start and goal; round the block
 // each goes to where another starts; the same seed gives the same scene.
 TEST(ScenarioDiscs, SwapAndRoomScenesAreValidAndDeterministic) {

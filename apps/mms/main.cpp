@@ -235,6 +235,11 @@ int main(int argc, char** argv) {
                        "share of its size (default: 0.04-0.1 from the seed; 0.5 is roomy)")
           ->capture_default_str()
           ->check(CLI::Range(0.001, 1.0));
+  scenarioCmd
+      ->add_option("--translate", sa.translate,
+                   "robots (by name, comma-separated) that only translate, e.g. niche-three's "
+                   "oncoming; each must keep its angle from start to goal")
+      ->delimiter(',');
   scenarioCmd->add_flag("--m-parts-only", sa.mPartsOnly,
                         "assembly-2: only the two M parts, with goals outside (the 4-D problem "
                         "left once the triangles are out)");

@@ -79,13 +79,14 @@ def scenario_names() -> list[str]:
 
 def scenario(name: str, *, seed: int = 1, tightness: float = 0.0, slack: float | None = None,
              robots: int | None = None, obstacles: int | None = None,
-             m_parts_only: bool = False) -> Scene:
+             m_parts_only: bool = False, translate: list[str] | tuple[str, ...] = ()) -> Scene:
     """A generated scene, the same as `mms scenario NAME --seed K ...` writes.
 
     pacman (tightness), viking-helmet, random-polygons (seed), assembly-1 and assembly-2
     (slack), random (seed, robots, obstacles) and the generated families carry-turn,
     niche-swap (slack), niche-three, discs-swap, discs-room (robots), open-clutter, bend and
-    doors (seed). Raises InputError for an unknown name or a setting out of range."""
+    doors (seed). translate names robots that only translate (each must keep its angle from
+    start to goal). Raises InputError for an unknown name or a setting out of range."""
     r = _mms.ScenarioRequest()
     r.name = _text(name, "mms.scenario: name")
     r.seed = _whole(seed, "mms.scenario: seed")
@@ -98,6 +99,10 @@ def scenario(name: str, *, seed: int = 1, tightness: float = 0.0, slack: float |
     if obstacles is not None:
         r.obstacles = _whole(obstacles, "mms.scenario: obstacles", limit=1 << 30)
     r.m_parts_only = bool(m_parts_only)
+    if isinstance(translate, str) or not isinstance(translate, (list, tuple)):
+        raise InputError("mms.scenario: translate: expected a list of robot names, got "
+                         + type(translate).__name__)
+    r.translate = [_text(n, "mms.scenario: translate") for n in translate]
     return _mms.scenario(r)
 
 

@@ -340,7 +340,8 @@ PYBIND11_MODULE(_mms, m) {
       .def_readwrite("slack_given", &ScenarioRequest::slackGiven)
       .def_readwrite("m_parts_only", &ScenarioRequest::mPartsOnly)
       .def_readwrite("robots", &ScenarioRequest::robots)
-      .def_readwrite("obstacles", &ScenarioRequest::obstacles);
+      .def_readwrite("obstacles", &ScenarioRequest::obstacles)
+      .def_readwrite("translate", &ScenarioRequest::translate);
 
   m.def("planners", [] {
     py::list out;

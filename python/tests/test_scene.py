@@ -109,6 +109,8 @@ def test_scenarios_match_the_command_line(tmp_path):
         ("niche-swap", {"seed": 3, "slack": 0.2}, ["--seed", "3", "--slack", "0.2"]),
         ("random", {"seed": 4, "robots": 2, "obstacles": 5},
          ["--seed", "4", "--robots", "2", "--obstacles", "5"]),
+        ("niche-three", {"seed": 2, "translate": ["oncoming"]},
+         ["--seed", "2", "--translate", "oncoming"]),
     ]:
         file = tmp_path / f"{name}.json"
         cli("scenario", name, *args, "-o", file, check=True)
@@ -122,6 +124,9 @@ def test_scenarios_match_the_command_line(tmp_path):
     ({"name": "random", "robots": 3}, "1 or 2"),
     ({"name": "carry-turn", "seed": -1}, "seed"),
     ({"name": "carry-turn", "seed": 1.5}, "whole number"),
+    ({"name": "niche-three", "translate": ["nobody"]}, "no robot 'nobody'.*oncoming"),
+    ({"name": "niche-three", "translate": "oncoming"}, "list of robot names"),
+    ({"name": "carry-turn", "translate": ["part"]}, "turns from start to goal"),
 ])
 def test_bad_scenario_settings(kwargs, match):
     with pytest.raises(mms.InputError, match=match):

@@ -63,6 +63,26 @@ Scene makeScenario(const ScenarioRequest& r, const std::string& prefix) {
     throw InputError(prefix + "robots: " + std::to_string(r.robots) +
                      " robots; the random test scene has 1 or 2 (discs-room takes more)");
   Scene s = generate(r);
+  for (const std::string& name : r.translate) {
+    std::string robots;
+    Robot* robot = nullptr;
+    for (Robot& candidate : s.robots) {
+      robots += (robots.empty() ? "" : ", ") + candidate.name;
+      if (candidate.name == name) robot = &candidate;
+    }
+    if (!robot)
+      throw InputError(prefix + "translate: no robot '" + name + "' in " + r.name +
+                       " (robots: " + robots + ")");
+    if (robot->goal.theta != robot->start.theta)
+      throw InputError(prefix + "translate: robot '" + name + "' of " + s.name +
+                       " turns from start to goal (" + formatNumber(robot->start.theta) + " to " +
+                       formatNumber(robot->goal.theta) +
+                       " rad); only a robot that keeps its "
+                       "angle can translate");
+    if (robot->motion == Motion::Translate) continue;
+    robot->motion = Motion::Translate;
+    s.name += "-" + name + "-translates";
+  }
   // The generators must produce valid scenes.
   try {
     parseScene(sceneToJson(s), r.name);

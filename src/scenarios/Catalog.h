@@ -17,6 +17,9 @@ struct ScenarioRequest {
   bool slackGiven = false;
   bool mPartsOnly = false;         // assembly-2
   int robots = 0, obstacles = -1;  // random: 0 / -1 = drawn from the seed; discs-room: robots
+  // Robots (by name) that only translate; each must keep its angle from start to goal. The scene
+  // is named apart ("niche-three-3-oncoming-translates"), so a benchmark keeps both variants.
+  std::vector<std::string> translate;
 };
 
 /// pacman, viking-helmet, random-polygons, assembly-1, ... in the order of the docs.
