@@ -130,10 +130,10 @@ TEST(KRobots, NoPathWithoutTheNiche) {
 // Growth points that leave the other robots room find the niche with less work (overlays
 // built, screening ones included) than unscreened ones: on seeds 1-10, planner seed 1, 6 890
 // against 576 390 (1-221x less per seed). Unscreened, seeds 1, 3, 5, 6 and 10 take
-// 3-57 s, so the test runs seeds that take about a second (about 10x less work).
+// 3-57 s, so the test runs three that take under a second (13x less work).
 TEST(KRobots, ScreenedGrowthPointsFindTheNicheWithLessWork) {
   size_t work[2] = {0, 0};  // screened, not
-  for (const uint64_t seed : {2, 4, 8}) {
+  for (const uint64_t seed : {2, 4, 9}) {
     const Scene s = nicheThreeScene(seed);
     for (const size_t screen : {size_t(16), size_t(1)}) {
       const KRobotResult r = plan(s, 1, screen);
