@@ -7,7 +7,8 @@
 # Usage: scripts/bench-generalization.sh tuning|fresh|fresh2 [OUTPUT_DIR] (default
 # bench-generalization-SET); fresh2 is seeds 200-219, for when a fresh seed had to be looked at.
 # Environment: LIMIT (seconds per run, default 10), JOBS (cores to fill, default 2; an auto run
-# takes both), FAMILIES (default: all below), PLANNERS (default: the six above).
+# takes both), FAMILIES (default: all below; FAMILY:ROBOT[,ROBOT] for the family with those robots
+# translating only, e.g. niche-three:oncoming), PLANNERS (default: the six above).
 # It writes OUTPUT_DIR/summary.md: per family and planner, the median over seeds (a failure
 # counts as the limit) and the seeds solved, and the ratios of the best OMPL planner's median to
 # auto's and to MMS's (above 1: ours is faster). The OMPL planners use their whole limit on the
@@ -34,10 +35,19 @@ if [[ ! -x build/mms ]]; then
 fi
 mkdir -p "$out/scenes"
 scenes=()
-for f in $families; do
+for spec in $families; do
+  # FAMILY:ROBOT[,ROBOT]: the family with those robots translating only (`--translate`).
+  f=${spec%%:*}
+  extra=()
+  file=$f
+  if [[ $spec == *:* ]]; then
+    extra=(--translate "${spec#*:}")
+    file=$f-${spec#*:}-translates
+    file=${file//,/-}
+  fi
   for k in $seeds; do
-    build/mms scenario "$f" --seed "$k" -o "$out/scenes/$f-$k.json" >/dev/null
-    scenes+=("$out/scenes/$f-$k.json")
+    build/mms scenario "$f" --seed "$k" "${extra[@]}" -o "$out/scenes/$file-$k.json" >/dev/null
+    scenes+=("$out/scenes/$file-$k.json")
   done
 done
 build/mms bench "${scenes[@]}" --planners "$planners" --runs 1 --time-limit "$limit" \

@@ -199,7 +199,7 @@ TEST(ScenarioTranslate, NamedRobotsOnlyTranslateAndTurningOnesAreRefused) {
       test::runMms("scenario niche-three --seed 3 --translate oncoming -o " + test::quote(file));
   ASSERT_EQ(ok.code, 0) << ok.err;
   const Scene s = loadScene(file);
-  EXPECT_EQ(s.name, "niche-three-3-oncoming-translates");
+  EXPECT_EQ(s.name, "niche-three-oncoming-translates-3");  // the family, then the seed
   const Scene plain = nicheThreeScene(3);
   for (size_t r = 0; r < 3; ++r) {
     EXPECT_EQ(s.robots[r].motion, r == 2 ? Motion::Translate : Motion::Rigid) << r;

@@ -81,7 +81,12 @@ Scene makeScenario(const ScenarioRequest& r, const std::string& prefix) {
                        "angle can translate");
     if (robot->motion == Motion::Translate) continue;
     robot->motion = Motion::Translate;
-    s.name += "-" + name + "-translates";
+    // Before a trailing seed, so that the name without "-SEED" still names the family.
+    size_t at = s.name.find_last_of('-');
+    if (at == std::string::npos || at + 1 == s.name.size() ||
+        s.name.find_first_not_of("0123456789", at + 1) != std::string::npos)
+      at = s.name.size();
+    s.name.insert(at, "-" + name + "-translates");
   }
   // The generators must produce valid scenes.
   try {

@@ -18,7 +18,7 @@ struct ScenarioRequest {
   bool mPartsOnly = false;         // assembly-2
   int robots = 0, obstacles = -1;  // random: 0 / -1 = drawn from the seed; discs-room: robots
   // Robots (by name) that only translate; each must keep its angle from start to goal. The scene
-  // is named apart ("niche-three-3-oncoming-translates"), so a benchmark keeps both variants.
+  // is named apart ("niche-three-oncoming-translates-3"), so a benchmark keeps both variants.
   std::vector<std::string> translate;
 };
 
