@@ -42,8 +42,8 @@ for spec in $families; do
   file=$f
   if [[ $spec == *:* ]]; then
     extra=(--translate "${spec#*:}")
-    file=$f-${spec#*:}-translates
-    file=${file//,/-}
+    IFS=, read -ra robots <<<"${spec#*:}"
+    for robot in "${robots[@]}"; do file+=-$robot-translates; done  # as the scene is named
   fi
   for k in $seeds; do
     build/mms scenario "$f" --seed "$k" "${extra[@]}" -o "$out/scenes/$file-$k.json" >/dev/null

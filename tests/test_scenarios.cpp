@@ -210,8 +210,17 @@ TEST(ScenarioTranslate, NamedRobotsOnlyTranslateAndTurningOnesAreRefused) {
       test::runMms("scenario niche-three --translate nobody -o " + test::quote(file));
   EXPECT_EQ(unknown.code, 2);
   EXPECT_EQ(unknown.err,
-            "--translate: no robot 'nobody' in niche-three (robots: first, second, "
+            "--translate: no robot 'nobody' in niche-three-1 (robots: first, second, "
             "oncoming)\n");
+  // Named twice: translated once, named once. A trailing number that is not the seed stays.
+  ASSERT_EQ(test::runMms("scenario pacman --translate square,square -o " + test::quote(file)).code,
+            0);
+  EXPECT_EQ(loadScene(file).name, "pacman-0-square-translates");
+  // A robot that translates already would give a scene named as the plain one: refused.
+  const test::Outcome already =
+      test::runMms("scenario discs-swap --translate disc-0 -o " + test::quote(file));
+  EXPECT_EQ(already.code, 2);
+  EXPECT_EQ(already.err, "--translate: robot 'disc-0' of discs-swap-1 translates already\n");
   const test::Outcome turning =
       test::runMms("scenario carry-turn --translate part -o " + test::quote(file));
   EXPECT_EQ(turning.code, 2);

@@ -273,7 +273,7 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
     done.insert(key(r));
     if (!r.solved()) ++failures[group(r)];
   };
-  double newest = 0;  // when the newest recorded run started
+  double newest = 0;  // when the newest recorded run of this benchmark started
   if (fs::exists(runsFile)) {
     // A resumed benchmark must measure what the recorded runs measured: refuse other limits
     // or another mms, rather than mixing them in one table.
@@ -281,9 +281,9 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
     for (const Job& j : jobs) planned[key(j.record)] = &j;
     for (const RunRecord& r : readRuns(runsFile)) {
       count(r);
-      newest = std::max(newest, r.startedAt);
       const auto it = planned.find(key(r));
       if (it == planned.end()) continue;
+      newest = std::max(newest, r.startedAt);
       const RunRecord& now = it->second->record;
       auto differs = [&](const std::string& what, const std::string& then,
                          const std::string& asked) {
@@ -304,13 +304,11 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
   for (const Job& j : jobs) reused += done.count(key(j.record));
   if (reused > 0) {
     std::string when;
-    if (newest > 0) {
-      const std::time_t t = std::time_t(newest);
-      std::tm utc{};
-      char buf[32];
-      std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", gmtime_r(&t, &utc));
+    std::tm utc{};
+    char buf[32];
+    const std::time_t t = newest > 0 && newest < 1e15 ? std::time_t(newest) : 0;  // not garbage
+    if (t > 0 && gmtime_r(&t, &utc) && std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", &utc))
       when = std::string(", the newest started ") + buf;
-    }
     std::fprintf(stderr,
                  "mms bench: resuming %s: %zu of %zu runs recorded already%s; give another "
                  "output folder to measure them again\n",
