@@ -274,6 +274,7 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
     if (!r.solved()) ++failures[group(r)];
   };
   double newest = 0;  // when the newest recorded run of this benchmark started
+  size_t reused = 0;  // planned runs recorded already
   if (fs::exists(runsFile)) {
     // A resumed benchmark must measure what the recorded runs measured: refuse other limits
     // or another mms, rather than mixing them in one table.
@@ -297,11 +298,10 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
         differs("--memory-limit", formatNumber(r.memoryLimitMb), formatNumber(now.memoryLimitMb));
       if (!r.version.empty() && r.version != now.version) differs("mms", r.version, now.version);
     }
+    for (const auto& entry : planned) reused += done.count(entry.first);
   }
   // A folder kept from an earlier build resumes silently otherwise: the version need not change
   // between builds, so say at once what is reused and when it was measured.
-  size_t reused = 0;
-  for (const Job& j : jobs) reused += done.count(key(j.record));
   if (reused > 0) {
     std::string when;
     std::tm utc{};

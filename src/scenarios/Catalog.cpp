@@ -1,5 +1,6 @@
 #include "scenarios/Catalog.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "io/SceneIO.h"
@@ -38,7 +39,9 @@ void translateOnly(Scene& s, const ScenarioRequest& r, const std::string& prefix
                       scene.compare(scene.size() - seed.size(), seed.size(), seed) == 0;
   const size_t at = seeded ? scene.size() - seed.size() : scene.size();
   std::string suffix;
-  for (const std::string& name : r.translate) {
+  for (auto it = r.translate.begin(); it != r.translate.end(); ++it) {
+    const std::string& name = *it;
+    if (std::find(r.translate.begin(), it, name) != it) continue;  // named twice: once is enough
     std::string robots;
     Robot* robot = nullptr;
     for (Robot& candidate : s.robots) {
@@ -49,10 +52,6 @@ void translateOnly(Scene& s, const ScenarioRequest& r, const std::string& prefix
     if (!robot)
       throw InputError(prefix + "translate: no robot '" + name + "' in " + scene +
                        " (robots: " + robots + ")");
-    // Named twice: once is enough, and the name says it once.
-    if (robot->motion == Motion::Translate &&
-        suffix.find("-" + name + "-translates") != std::string::npos)
-      continue;
     if (robot->motion == Motion::Translate) throw InputError(what + " translates already");
     if (robot->goal.theta != robot->start.theta)
       throw InputError(what + " turns from start to goal (" + formatNumber(robot->start.theta) +
