@@ -68,7 +68,7 @@ Vec2 subspaceLinePoint(const std::vector<Slice>& base, const Box& b, Random& rng
   return uniform();
 }
 
-std::vector<double> narrowArcMiddles(const std::vector<Line>& lines, const LineWorld& alone,
+std::vector<double> narrowArcMiddles(std::span<const Line> lines, const LineWorld& alone,
                                      const PoseTest& amongObstacles, std::vector<double> met,
                                      double spacing, size_t limit) {
   std::vector<double> middles;

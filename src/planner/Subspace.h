@@ -5,6 +5,7 @@
 // planner (recursive MMS, Section II of the paper) one per fixing of either robot.
 #include <functional>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -96,7 +97,7 @@ Vec2 subspaceLinePoint(const std::vector<Slice>& base, const Box& bounds, Random
 /// in each subspace would pay for it again and again (in a corridor, most short arcs are the
 /// walls'). An arc the held robot makes more than twice as narrow still counts. At most `limit`
 /// middles, in line and arc order.
-std::vector<double> narrowArcMiddles(const std::vector<Line>& lines, const LineWorld& alone,
+std::vector<double> narrowArcMiddles(std::span<const Line> lines, const LineWorld& alone,
                                      const PoseTest& amongObstacles, std::vector<double> met,
                                      double spacing, size_t limit);
 

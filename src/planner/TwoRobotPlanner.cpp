@@ -179,10 +179,13 @@ void TwoRobotPlanner::sliceNarrowArcs(Subspace& sub) {
   {
     // Most of this is the lines among the obstacles alone that narrowArcMiddles builds.
     const TimeCharge charge(stats_.manifolds.lineSeconds);
+    // Only the lines not scanned before: the root subspaces gain lines every round.
+    narrowScanned_.resize(subspaces_.size());
+    const std::span<const Line> lines(sub.lines());
     for (const double m : narrowArcMiddles(
-             sub.lines(), *lineWorlds_[moving],
-             [&](const Pose& q) { return checker_.robotFree(moving, q); }, met,
-             2 * M_PI / double(base_[moving].size()), settings_.narrowSlices))
+             lines.subspan(std::exchange(narrowScanned_[sub.id()], lines.size())),
+             *lineWorlds_[moving], [&](const Pose& q) { return checker_.robotFree(moving, q); },
+             met, 2 * M_PI / double(base_[moving].size()), settings_.narrowSlices))
       middles.push_back(exact::rationalAngleNear(m, 30));
   }
   // Built on all threads (each a new base slice and its overlay), added in arc order.
@@ -267,6 +270,20 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
   return subspaces_.size() - 1;
 }
 
+// The four subspaces holding a robot at its start or goal double their random lines each
+// round, as the slices double their angles. Every path begins and ends in them, and no later
+// fixing can stand in for them as new fixings stand in for any other subspace, so a rotation
+// passage their first lines missed (the square entering the Pacman's mouth while the Pacman
+// waits at its start) would otherwise wait for the shared angles to become dense enough.
+void TwoRobotPlanner::growRootLines(size_t count, const Termination& stop) {
+  for (size_t k = 0; k < 4 && k < subspaces_.size(); ++k) {
+    Subspace& sub = *subspaces_[k];
+    if (translates_[sub.moving()]) continue;
+    for (size_t i = 0; i < count && !stop(); ++i) sub.addLine(linePoint(sub.moving()));
+    narrowPending_.push_back(k);
+  }
+}
+
 bool TwoRobotPlanner::leavesRoom(const Fixing& f) {
   const TimeCharge charge(stats_.manifolds.sliceSeconds);
   ++stats_.screenedPoses;
@@ -313,7 +330,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
   addCompound(stop);
   sliceNarrowArcsIfDisconnected();
 
-  size_t target = settings_.nFixings;
+  size_t target = settings_.nFixings, rootLines = settings_.nLines;
   Stopwatch sinceReport;
   // The robots take turns, so both families grow before start and goal connect.
   std::array<bool, 2> exhausted{false, false};
@@ -346,6 +363,8 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     // current sets offer (the Pacman's mouth and the square), or an angle the obstacles alone
     // allow (an L through a gap). While a set is small the fixings wait (anglesFirst).
     if (!anglesFirst(sequenceAngles_, translates_)) target *= 2;
+    growRootLines(rootLines, stop);
+    rootLines *= 2;
     for (size_t r = 0; r < 2; ++r)
       if (!translates_[r]) {
         const std::vector<double> thetas = angles_[r]->take(sequenceAngles_[r]);
@@ -353,6 +372,8 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
         addAngles(r, thetas, stop);
       }
     for (auto& c : compounds_) addCompoundLines(*c, c->lineCount(), stop);
+    // Rounds that only add angles grow no fixings, so nothing else would build these now.
+    sliceNarrowArcsIfDisconnected();
     return true;
   };
   RoundsOutcome o = runRounds(h, roadmap_, size_t(from), size_t(to), stop, stats_);

@@ -138,6 +138,7 @@ class TwoRobotPlanner : private FixingHost {
   size_t addSubspace(const Fixing& held, const Termination& stop);
   long nodeFor(const Subspace& sub, const Fixing& f, bool knownFree = false) const;
   Vec2 linePoint(size_t robot);
+  void growRootLines(size_t count, const Termination& stop);
   void sliceNarrowArcs(Subspace& sub);
   void sliceNarrowArcsIfDisconnected();
   void sliceNarrowArcsNow();
@@ -163,6 +164,7 @@ class TwoRobotPlanner : private FixingHost {
   std::vector<Fixing> fixings_;  // fixings_[i] is held in subspaces_[i]
   std::vector<std::unique_ptr<Subspace>> subspaces_;
   std::vector<size_t> narrowPending_;  // subspaces whose narrow-arc slices are not built yet
+  std::vector<size_t> narrowScanned_;  // per subspace: its lines scanned for narrow arcs
   std::vector<std::unique_ptr<CompoundSubspace>> compounds_;  // the pair as one body, if close
   Roadmap roadmap_;
   std::array<std::vector<size_t>, 2> cells_;    // per robot: slice-cell nodes where it moves
