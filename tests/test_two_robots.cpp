@@ -112,6 +112,9 @@ TEST(TwoRobots, FixingsWaitWhileTheAngleSetsGrowToSixteen) {
   EXPECT_EQ(few3.fixings, few1.fixings);
   EXPECT_EQ(few3.subspaces, few1.subspaces);
   EXPECT_GT(few3.manifolds.slices, 3 * few1.manifolds.slices);
+  // Only the four start and goal subspaces gain lines: n_l in round 2, 2 n_l in round 3.
+  const size_t nLines = TwoRobotSettings{}.nLines;
+  EXPECT_EQ(few3.manifolds.lines, few1.manifolds.lines + 4 * 3 * nLines);
   // The threshold from the start: every round doubles the fixings too.
   const TwoRobotStats full1 = run(kAnglesBeforeFixingsGrow, 1),
                       full2 = run(kAnglesBeforeFixingsGrow, 2);
@@ -144,13 +147,13 @@ TEST(TwoRobots, NarrowArcSlicesOpenTheTightestPacman) {
 // Every path begins and ends in the four subspaces that hold a robot at its start or goal, and
 // no later fixing stands in for them, so they double their lines every round. At tightness 0.99
 // the square leaves the Pacman's mouth only where the Pacman, held round the square at its goal,
-// has turned to within a hair of half a turn: a narrow arc of a line in that subspace. Three of
-// these twenty planner seeds drew no such line among the first 128 and took 4, 7 and more than 7
-// rounds (36 s to over 60 s) while only new fixings brought new lines.
+// has turned to within a hair of half a turn: a narrow arc of a line in that subspace. These two
+// planner seeds drew no such line among the first 128 and took 7 rounds (36 s) and more than 7
+// (unsolved in 60 s) while only new fixings brought new lines.
 TEST(TwoRobots, StartAndGoalSubspacesGainLinesEveryRound) {
   const Scene s = pacmanScene(0.99);
   const CollisionChecker checker(s);
-  for (uint64_t seed = 1; seed <= 20; ++seed) {
+  for (const uint64_t seed : {4, 17}) {
     TwoRobotSettings st;
     st.seed = seed;
     st.maxRounds = 2;
