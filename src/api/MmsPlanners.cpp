@@ -139,7 +139,8 @@ std::vector<ParamSpec> mmsParams() {
            each(double(one.nTheta), double(two.nTheta), double(many.nTheta)) + ")"},
       {"n-lines", Type::Integer, 1, 1e7, double(one.nLines),
        "Lines (fixed positions, n_l). One robot: in the first round, doubling each round. Two "
-       "robots or more: per subspace (default " +
+       "robots or more: per subspace (two robots: the subspaces holding a robot at its start or "
+       "goal double theirs each round) (default " +
            each(double(one.nLines), double(two.nLines), double(many.nLines)) + ")"},
       {"n-fixings", Type::Integer, 1, 1e6, double(two.nFixings),
        "Two robots only: fixings per robot in the first round (n_f), doubling each round once "

@@ -168,8 +168,9 @@ void TwoRobotPlanner::addOverlays(
 
 // Narrow arcs the held robot makes (narrowArcMiddles): a slice at each middle, local to this
 // subspace, opens the rotation passage the shared angles miss (the Pacman turned round so the
-// square passes through its mouth); at most settings_.narrowSlices per subspace. Open scenes
-// have no such arcs and pay nothing.
+// square passes through its mouth); at most settings_.narrowSlices each time the subspace's
+// new lines are scanned (once for most subspaces, every round for the start and goal ones).
+// Open scenes have no such arcs and pay nothing.
 void TwoRobotPlanner::sliceNarrowArcs(Subspace& sub) {
   const size_t moving = sub.moving();
   std::vector<double> met;
@@ -273,8 +274,9 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
 // The four subspaces holding a robot at its start or goal double their random lines each
 // round, as the slices double their angles. Every path begins and ends in them, and no later
 // fixing can stand in for them as new fixings stand in for any other subspace, so a rotation
-// passage their first lines missed (the square entering the Pacman's mouth while the Pacman
-// waits at its start) would otherwise wait for the shared angles to become dense enough.
+// passage their first lines missed (the Pacman turned round the square held at the square's
+// goal until the square can leave its mouth) would otherwise wait for the shared angles to
+// become dense enough.
 void TwoRobotPlanner::growRootLines(size_t count, const Termination& stop) {
   for (size_t k = 0; k < 4 && k < subspaces_.size(); ++k) {
     Subspace& sub = *subspaces_[k];

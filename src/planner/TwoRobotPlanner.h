@@ -65,7 +65,7 @@ struct TwoRobotSettings {
   // other family: those whose held poses are nearest, plus a random sample of the rest.
   size_t crossNearest = 256, crossRandom = 256;
   // Slices at the middles of narrow free arcs of a subspace's lines that no shared angle meets
-  // (local to the subspace), at most this many per subspace.
+  // (local to the subspace), at most this many each time a subspace's new lines are scanned.
   size_t narrowSlices = 8;
   // When the robots are close at start and goal, compound subspaces in which the pair keeps
   // its start or goal relative pose and moves as one rigid body (CompoundSubspace.h): a
