@@ -159,6 +159,8 @@ TEST(TwoRobots, StartAndGoalSubspacesGainLinesEveryRound) {
     st.maxRounds = 2;
     const TwoRobotResult r = TwoRobotPlanner(s, st).solve(Termination(planSeconds(60)));
     ASSERT_EQ(r.status, PlanStatus::Found) << "seed " << seed;
+    EXPECT_EQ(r.stats.rounds, 2u) << "seed " << seed;  // the first round's lines missed it
+    EXPECT_GT(r.stats.manifolds.localSlices, 0u) << "seed " << seed;
     EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << "seed " << seed;
   }
 }

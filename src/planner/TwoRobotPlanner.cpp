@@ -250,8 +250,7 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
     const Robot& r = scene_.robots[moving];
     sub.addLine({r.start.x, r.start.y});  // line 0
     sub.addLine({r.goal.x, r.goal.y});    // line 1
-    for (size_t i = 0; i < settings_.nLines && !stop(); ++i) sub.addLine(linePoint(moving));
-    narrowPending_.push_back(subspaces_.size() - 1);
+    addRandomLines(sub, settings_.nLines, stop);
   }
   // Meet subspaces of the other family at the pair of their held poses.
   Stopwatch watch;
@@ -278,12 +277,15 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
 // goal until the square can leave its mouth) would otherwise wait for the shared angles to
 // become dense enough.
 void TwoRobotPlanner::growRootLines(size_t count, const Termination& stop) {
-  for (size_t k = 0; k < 4 && k < subspaces_.size(); ++k) {
-    Subspace& sub = *subspaces_[k];
-    if (translates_[sub.moving()]) continue;
-    for (size_t i = 0; i < count && !stop(); ++i) sub.addLine(linePoint(sub.moving()));
-    narrowPending_.push_back(k);
-  }
+  for (size_t k = 0; k < 4 && !stop(); ++k)
+    if (!translates_[subspaces_[k]->moving()]) addRandomLines(*subspaces_[k], count, stop);
+}
+
+// Random lines (subspaceLinePoint) in a subspace of a rigid robot; their narrow arcs wait in
+// narrowPending_ for sliceNarrowArcsIfDisconnected.
+void TwoRobotPlanner::addRandomLines(Subspace& sub, size_t count, const Termination& stop) {
+  for (size_t i = 0; i < count && !stop(); ++i) sub.addLine(linePoint(sub.moving()));
+  narrowPending_.push_back(sub.id());
 }
 
 bool TwoRobotPlanner::leavesRoom(const Fixing& f) {
@@ -375,7 +377,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
       }
     for (auto& c : compounds_) addCompoundLines(*c, c->lineCount(), stop);
     // Rounds that only add angles grow no fixings, so nothing else would build these now.
-    sliceNarrowArcsIfDisconnected();
+    if (!stop()) sliceNarrowArcsIfDisconnected();
     return true;
   };
   RoundsOutcome o = runRounds(h, roadmap_, size_t(from), size_t(to), stop, stats_);

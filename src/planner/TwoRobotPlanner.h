@@ -37,7 +37,9 @@ struct TwoRobotSettings {
   // still where the first round solves, but 2.5 times slower on the Viking helmet, whose
   // passage needs an angle neither the start's nor the goal's (docs/benchmarks.md).
   size_t nTheta = 4;
-  size_t nLines = 128;  // n_l: random lines per subspace
+  // n_l: random lines of a new subspace. The four holding a robot at its start or goal add
+  // n_l, 2 n_l, ... more in rounds 2, 3, ... (growRootLines).
+  size_t nLines = 128;
   // n_f: fixings per robot in the first round. Every round after the first doubles n_theta (the
   // new angles are the midpoints), so passages that need the robots' angles aligned closely are
   // reached too, and, once each rigid robot has 16 angles, n_f (anglesFirst in Rounds.h).
@@ -139,6 +141,7 @@ class TwoRobotPlanner : private FixingHost {
   long nodeFor(const Subspace& sub, const Fixing& f, bool knownFree = false) const;
   Vec2 linePoint(size_t robot);
   void growRootLines(size_t count, const Termination& stop);
+  void addRandomLines(Subspace& sub, size_t count, const Termination& stop);
   void sliceNarrowArcs(Subspace& sub);
   void sliceNarrowArcsIfDisconnected();
   void sliceNarrowArcsNow();
