@@ -72,7 +72,7 @@ std::vector<size_t> TwoRobotPlanner::crossCandidates(const Fixing& held) {
   auto take = [&](size_t j) {
     if (!taken[j] && subspaces_[j]->moving() == held.robot) out.push_back(j), taken[j] = 1;
   };
-  for (size_t j = 0; j < 4; ++j) take(j);  // start and goal fixings
+  for (size_t j = 0; j < kRootSubspaces; ++j) take(j);  // start and goal fixings
   if (held.parent >= 0) take(size_t(held.parent));
   auto distance = [&](size_t j) {
     return std::hypot(fixings_[j].pose.x - held.pose.x, fixings_[j].pose.y - held.pose.y);

@@ -277,7 +277,7 @@ size_t TwoRobotPlanner::addSubspace(const Fixing& held, const Termination& stop)
 // goal until the square can leave its mouth) would otherwise wait for the shared angles to
 // become dense enough.
 void TwoRobotPlanner::growRootLines(size_t count, const Termination& stop) {
-  for (size_t k = 0; k < 4 && !stop(); ++k)
+  for (size_t k = 0; k < kRootSubspaces && !stop(); ++k)
     if (!translates_[subspaces_[k]->moving()]) addRandomLines(*subspaces_[k], count, stop);
 }
 

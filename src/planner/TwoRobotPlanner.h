@@ -165,6 +165,8 @@ class TwoRobotPlanner : private FixingHost {
   std::array<std::vector<Slice>, 2>
       base_;                     // per robot: its slice at each of its angles, obstacles only
   std::vector<Fixing> fixings_;  // fixings_[i] is held in subspaces_[i]
+  // The first subspaces hold each robot at its start and at its goal (solveRounds).
+  static constexpr size_t kRootSubspaces = 4;
   std::vector<std::unique_ptr<Subspace>> subspaces_;
   std::vector<size_t> narrowPending_;  // subspaces whose narrow-arc slices are not built yet
   std::vector<size_t> narrowScanned_;  // per subspace: its lines scanned for narrow arcs

@@ -26,6 +26,11 @@ void requireRange(const std::string& prefix, const char* setting, double v, doub
                      ", " + formatNumber(hi) + "]");
 }
 
+// Whether the family's scene depends on --seed: all but the paper's fixed scenes (generate()).
+bool usesSeed(const std::string& n) {
+  return n != "pacman" && n != "viking-helmet" && n != "assembly-1" && n != "assembly-2";
+}
+
 // The robots r.translate names made translation-only, the scene named apart: before its seed
 // when it ends with one ("niche-three-oncoming-translates-3"), so that the name without
 // "-SEED" still names the family; at the end otherwise ("pacman-0-square-translates", whose
@@ -34,8 +39,7 @@ void translateOnly(Scene& s, const ScenarioRequest& r, const std::string& prefix
   const std::string scene = s.name;
   std::string seed(1, '-');  // appended, not "-" + ...: GCC 12 warns (-Wrestrict) on that here
   seed += std::to_string(r.seed);
-  const bool seeded = r.name != "pacman" && r.name != "viking-helmet" && r.name != "assembly-1" &&
-                      r.name != "assembly-2" && scene.size() > seed.size() &&
+  const bool seeded = usesSeed(r.name) && scene.size() > seed.size() &&
                       scene.compare(scene.size() - seed.size(), seed.size(), seed) == 0;
   const size_t at = seeded ? scene.size() - seed.size() : scene.size();
   std::string suffix;
@@ -63,6 +67,7 @@ void translateOnly(Scene& s, const ScenarioRequest& r, const std::string& prefix
   s.name = scene.substr(0, at) + suffix + scene.substr(at);
 }
 
+// A family added here without a seed belongs in usesSeed() too.
 Scene generate(const ScenarioRequest& r) {
   const std::string& n = r.name;
   if (n == "pacman") return pacmanScene(r.tightness);
