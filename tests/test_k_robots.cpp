@@ -136,7 +136,10 @@ TEST(KRobots, NoPathWithoutTheNiche) {
 // 3-57 s, so the test runs three that take under a second (13x less work).
 TEST(KRobots, ScreenedGrowthPointsFindTheNicheWithLessWork) {
   size_t work[2] = {0, 0};  // screened, not
-  for (const uint64_t seed : {2, 4, 9}) {
+  // Under the sanitizers (30x slower) seed 9 alone: 314 against 978 in Release.
+  const std::vector<uint64_t> seeds =
+      test::kSanitized ? std::vector<uint64_t>{9} : std::vector<uint64_t>{2, 4, 9};
+  for (const uint64_t seed : seeds) {
     const Scene s = nicheThreeScene(seed);
     for (const size_t screen : {size_t(16), size_t(1)}) {
       const KRobotResult r = plan(s, 1, screen);
