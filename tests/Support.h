@@ -11,6 +11,7 @@
 #include <string>
 
 #include "mms/Geometry.h"
+#include "mms/Scene.h"
 
 namespace mms::test {
 
@@ -29,6 +30,24 @@ inline std::string scenario(const std::string& rel) { return sourceDir() + "/sce
 /// The axis-aligned rectangle [x0, x1] x [y0, y1], counter-clockwise.
 inline Ring rect(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+/// A wall across the whole box parts the left half from the right; robot "a" only translates
+/// and has its goal across the wall, so no motion exists. The other robots (rigid squares,
+/// `robots` in all) have room enough on the left.
+inline Scene walledOffScene(size_t robots) {
+  Scene s;
+  s.name = "walled-off";
+  s.bounds = {-10, -10, 10, 10};
+  s.obstacles = {rect(-0.5, -10, 0.5, 10)};
+  const Ring square = rect(-0.4, -0.4, 0.4, 0.4);
+  s.robots.push_back({"a", square, {-5, 0, 0}, {5, 0, 0}, Motion::Translate});
+  for (size_t r = 1; r < robots; ++r) {
+    const double y = 2.5 * double(r);
+    s.robots.push_back(
+        {std::string(1, char('a' + r)), square, {-8, y, 0}, {-3, -y, 1}, Motion::Rigid});
+  }
+  return s;
 }
 
 /// A fresh directory per test process, removed at exit.

@@ -150,6 +150,15 @@ TEST(KRobots, ScreenedGrowthPointsFindTheNicheWithLessWork) {
   EXPECT_LT(2 * work[0], work[1]) << work[0] << " vs " << work[1];
 }
 
+// Three robots, one of them translating with its goal across a wall: no motion exists, and the
+// planner says so from its base slices, before building any subspace.
+TEST(KRobots, ATranslatingRobotCutOffFromItsGoalEndsTheSearchAtOnce) {
+  const KRobotResult r = plan(walledOffScene(3), 1);
+  EXPECT_EQ(r.status, PlanStatus::NotFound);
+  EXPECT_EQ(r.stats.subspaces, 0u);
+  EXPECT_NE(r.stats.noPath.find("robot 'a' only translates"), std::string::npos) << r.stats.noPath;
+}
+
 // Discs (translating robots: one slice per subspace, no lines): round a block to each other's
 // places, and ten across an open room, with certified paths.
 TEST(KRobots, DiscsSwapRoundABlockAndCrossAnOpenRoom) {

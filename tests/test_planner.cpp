@@ -136,13 +136,16 @@ TEST(Plan, TranslateOnlyRobotUsesItsExactFreeSpace) {
   s.robots = {r};
   const MmsResult found = plan(s, 1, 10);
   ASSERT_EQ(found.status, PlanStatus::Found);
+  EXPECT_TRUE(found.stats.noPath.empty());
   for (const Config& q : found.waypoints) EXPECT_EQ(q[2], 0.3);
   EXPECT_EQ(found.stats.manifolds.slices, 1u);  // one exact slice, no sampling
   // Close the gap above the wall: the two sides are different cells and the answer is
   // immediate, not a time-out.
   s.obstacles = {{{4, 0}, {6, 0}, {6, 10}, {4, 10}}};
   const auto t0 = std::chrono::steady_clock::now();
-  EXPECT_EQ(plan(s, 1, 30).status, PlanStatus::NotFound);
+  const MmsResult none = plan(s, 1, 30);
+  EXPECT_EQ(none.status, PlanStatus::NotFound);
+  EXPECT_NE(none.stats.noPath.find("robot 'block' only translates"), std::string::npos);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
 }
 
@@ -214,8 +217,8 @@ TEST(Plan, LinesNearCellVerticesTurnTheBendWithFewerManifolds) {
       MmsSettings st;
       st.cornerLineShare = corner ? 0.5 : 0.0;
       MmsPlanner planner(s, 0, st);
-      const MmsResult r = planner.solve(s.robots[0].start, s.robots[0].goal,
-                                        Termination(planSeconds(60)));
+      const MmsResult r =
+          planner.solve(s.robots[0].start, s.robots[0].goal, Termination(planSeconds(60)));
       ASSERT_EQ(r.status, PlanStatus::Found) << s.name;
       EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << s.name;
       built[corner] += r.stats.manifolds.slices + r.stats.manifolds.lines;

@@ -212,6 +212,24 @@ TEST(TwoRobots, CornerFixingsThatLeaveTheOtherRoomFindATightNicheSooner) {
   EXPECT_LT(2 * slices[0], slices[1]) << slices[0] << " vs " << slices[1];
 }
 
+// A translating robot whose goal lies across a wall has no motion, whatever the other robot
+// does: the planner says so from its base slices, before building any subspace, instead of
+// searching until the time limit.
+TEST(TwoRobots, ATranslatingRobotCutOffFromItsGoalEndsTheSearchAtOnce) {
+  const TwoRobotResult r = plan(walledOffScene(2), 1);
+  EXPECT_EQ(r.status, PlanStatus::NotFound);
+  EXPECT_EQ(r.stats.subspaces, 0u);
+  EXPECT_EQ(r.stats.rounds, 0u);
+  EXPECT_NE(r.stats.noPath.find("robot 'a' only translates"), std::string::npos) << r.stats.noPath;
+  // With the wall open in the middle, the same robots find their way.
+  Scene open = walledOffScene(2);
+  open.obstacles = {rect(-0.5, -10, 0.5, -2), rect(-0.5, 2, 0.5, 10)};
+  const TwoRobotResult o = plan(open, 1);
+  ASSERT_EQ(o.status, PlanStatus::Found);
+  EXPECT_TRUE(o.stats.noPath.empty());
+  EXPECT_TRUE(checkPath(open, CollisionChecker(open), o.waypoints).ok);
+}
+
 TEST(TwoRobots, SameSeedSamePath) {
   const Scene s = loadScene(scenario("two-robots/pacman-0.5.json"));
   const TwoRobotResult a = plan(s, 3), b = plan(s, 3);
@@ -228,6 +246,20 @@ TEST(TwoRobots, PlanCommandWritesACertifiedPath) {
   EXPECT_NE(r.out.find("subspaces"), std::string::npos);
   EXPECT_EQ(runMms("check " + scene + " " + quote(dir.path("p.json"))).code, 0);
   EXPECT_NE(readFile(dir.path("p.svg")).find("animateTransform"), std::string::npos);
+}
+
+// The command line says why no path exists when the planner proved it, in its output and in
+// the statistics file, and writes no path.
+TEST(TwoRobots, PlanCommandSaysWhyNoPathExists) {
+  TempDir dir;
+  const std::string scene = dir.path("walled.json"), stats = dir.path("stats.json");
+  saveScene(walledOffScene(2), scene);
+  const Outcome r = runMms("plan " + quote(scene) + " --time-limit 60 --stats-json " +
+                           quote(stats) + " -o " + quote(dir.path("p.json")));
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("no path exists: robot 'a' only translates"), std::string::npos) << r.out;
+  EXPECT_NE(readFile(stats).find("\"no_path\": \"robot 'a' only translates"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir.path("p.json")));
 }
 
 TEST(Scenarios, BundledFilesMatchTheGenerator) {

@@ -87,7 +87,10 @@ int report(const PlanArgs& a, const Scene& scene, const std::string& label, cons
     // robot's one exact slice): saying "time limit" would send the user to raise it.
     const bool early =
         r.status != PlanStatus::Cancelled && processClock().seconds() < 0.9 * a.timeLimit;
-    if (early)
+    if (!r.stats.noPath.empty())
+      std::printf("%s: no path exists: %s (%s, after %.3g s)\n", label.c_str(),
+                  r.stats.noPath.c_str(), a.planner.c_str(), r.stats.seconds);
+    else if (early)
       std::printf("%s: no path found (%s ended its search after %.3g s, before the %.3g s limit)\n",
                   label.c_str(), a.planner.c_str(), r.stats.seconds, a.timeLimit);
     else

@@ -68,6 +68,9 @@ struct PlanStatistics {
   /// path already found (afterFirstPath: "optimize", OMPL's "simplify"), which come after it.
   std::vector<std::pair<std::string, double>> phases;
   std::string solvedBy;  // a portfolio's member whose path this is ("" otherwise)
+  /// Why no path exists, when the planner proved it ("" otherwise): a translating robot whose
+  /// goal lies in another free region than its start among the obstacles alone.
+  std::string noPath;
 };
 
 /// Whether a phase improves a path already found (not part of PlanStatistics::seconds).

@@ -103,6 +103,15 @@ def test_unsolvable_scene_ends_at_the_limit():
         r.save("never-written.json")
 
 
+def test_a_proof_that_no_path_exists_is_named():
+    scene = box_scene(wall=True)
+    scene["robots"][0]["motion"] = "translate"  # its one slice is exact: the wall cuts it off
+    r = mms.plan(mms.Scene(scene), time_limit=60)
+    assert not r.found and r.status == "not_found"
+    assert r.stats["no_path"].startswith("robot 'r' only translates")
+    assert r.seconds < 30  # ended by the proof, not by the limit
+
+
 def test_pictures(bar_slot):
     r = mms.plan(bar_slot, "mms", time_limit=30)
     svg = mms.render_svg(bar_slot, r)

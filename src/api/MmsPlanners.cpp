@@ -32,6 +32,7 @@ PlanStatistics commonStatistics(const Stats& s, const SubspaceStats& m,
   p.manifoldsUsed = s.pathManifolds;
   p.pathCells = s.pathCells;
   p.rejectedPaths = s.rejectedPaths;
+  p.noPath = s.noPath;
   p.counts = {{"slices", m.slices},
               {"slice_cells", m.sliceCells},
               {"lines", m.lines},

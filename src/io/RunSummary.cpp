@@ -40,6 +40,7 @@ nlohmann::json toJson(const PlanStatistics& s, bool timings) {
   scalars(s, [&](const char* name, const auto& v) { j[name] = v; });
   for (const auto& [name, n] : s.counts) j["counts"][name] = n;
   if (!s.solvedBy.empty()) j["solved_by"] = s.solvedBy;
+  if (!s.noPath.empty()) j["no_path"] = s.noPath;
   if (!timings) {
     j.erase("seconds");
     return j;
@@ -55,6 +56,7 @@ PlanStatistics statisticsFromJson(const nlohmann::json& j) {
   for (const auto& [name, n] : j.at("counts").items()) s.counts.emplace_back(name, n.get<size_t>());
   for (const auto& [name, t] : j.at("phases").items()) s.phases.emplace_back(name, t.get<double>());
   s.solvedBy = j.value("solved_by", "");
+  s.noPath = j.value("no_path", "");
   return s;
 }
 

@@ -269,6 +269,10 @@ KRobotResult KRobotPlanner::solveRounds(const Termination& stop,
   }
   if (stop())
     return finish(result, stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound);
+  // Proof that no motion exists: the search ends here instead of at the time limit.
+  for (size_t r = 0; r < k_ && stats_.noPath.empty(); ++r)
+    if (translates_[r]) stats_.noPath = goalCutOffAlone(base_[r].front(), scene_.robots[r]);
+  if (!stats_.noPath.empty()) return finish(result, PlanStatus::NotFound);
   for (size_t r = 0; r < k_; ++r) {
     const Robot& rb = scene_.robots[r];
     const long angle = translates_[r] ? 0 : -1;

@@ -25,6 +25,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "check/PathChecker.h"
@@ -59,6 +60,7 @@ struct KRobotStats {
   size_t screenedPoses = 0;  // growth points screened by an overlay, in "overlays"
   size_t graphNodes = 0, graphEdges = 0, pathCells = 0, rejectedPaths = 0;
   size_t pathManifolds = 0, pathSubspaces = 0;
+  std::string noPath;  // why no path exists, when proved (PlanStatistics::noPath)
   SubspaceStats manifolds;
   double baseSliceSeconds = 0, crossSeconds = 0, searchSeconds = 0, motionSeconds = 0,
          certifySeconds = 0;

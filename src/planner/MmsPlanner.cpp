@@ -116,6 +116,10 @@ PlanStatus MmsPlanner::solveTranslation(const Pose& start, const Pose& goal, Mms
   if (slices().empty()) addSlice(start.theta);
   const Slice& s = slices().front();
   const int a = s.locate({start.x, start.y}), b = s.locate({goal.x, goal.y});
+  Robot moved = scene_.robots[0];
+  moved.start = start;
+  moved.goal = goal;
+  stats_.noPath = goalCutOffAlone(s, moved);
   if (a < 0 || a != b) return PlanStatus::NotFound;
   const auto route = routeInCell(s.cell(a), [&](Vec2 p) { return s.locate(p) == a; },
                                  {start.x, start.y}, {goal.x, goal.y});

@@ -66,6 +66,7 @@ struct MmsStats {
   size_t pathCells = 0;      // FSCs on the graph path
   size_t pathManifolds = 0;  // the slices and lines they lie on (of slices + lines built)
   size_t rejectedPaths = 0;  // candidate motions the checker refused
+  std::string noPath;        // why no path exists, when proved (PlanStatistics::noPath)
   double searchSeconds = 0, motionSeconds = 0, certifySeconds = 0, totalSeconds = 0;
 };
 

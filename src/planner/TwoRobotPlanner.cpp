@@ -317,6 +317,10 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
   buildBaseSlices(stop);
   if (stop())
     return finish(result, stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound);
+  // Proof that no motion exists: the search ends here instead of at the time limit.
+  for (size_t r = 0; r < 2 && stats_.noPath.empty(); ++r)
+    if (translates_[r]) stats_.noPath = goalCutOffAlone(base_[r].front(), scene_.robots[r]);
+  if (!stats_.noPath.empty()) return finish(result, PlanStatus::NotFound);
   // Start and goal fixings: each robot held at its start and at its goal. A translating
   // robot's poses lie in its one slice; a rigid robot's on lines 0 (start) and 1 (goal).
   std::array<Fixing, 2> start, goal;

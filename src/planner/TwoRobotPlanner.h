@@ -18,6 +18,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "check/PathChecker.h"
@@ -87,6 +88,7 @@ struct TwoRobotStats {
   size_t screenedPoses = 0;    // corner poses screened by an overlay (leavesRoom), in "overlays"
   size_t pathCells = 0, rejectedPaths = 0;
   size_t pathManifolds = 0, pathSubspaces = 0;  // of those built: slices + lines, subspaces
+  std::string noPath;  // why no path exists, when proved (PlanStatistics::noPath)
   std::array<size_t, 2> fixings{0, 0};
   SubspaceStats manifolds;  // slices, lines, cells, arcs over all one-robot subspaces
   SubspaceStats compound;   // the same over the compound subspaces (the pair as one body)
