@@ -10,6 +10,7 @@
 #include "geometry/PolygonOps.h"
 #include "io/SceneIO.h"
 #include "scenarios/Generators.h"
+#include "util/Random.h"
 
 using namespace mms;
 
@@ -255,6 +256,44 @@ TEST(CollisionChecker, ObstacleInsideRobotCollides) {
   const CollisionChecker c(s);
   EXPECT_FALSE(c.robotFree(0, {5, 5, 0.2}));
   EXPECT_EQ(c.robotClearance(0, {5, 5, 0.2}).distance, 0.0);
+}
+
+// The inscribed disc lies inside its ring (checked on points of its circle) and is near the
+// largest one, against a fine grid of centres (brute force), on random star-shaped polygons,
+// convex and not, and a thin L.
+TEST(InscribedDisc, LiesInsideAndIsNearTheLargest) {
+  Random rng(7);
+  std::vector<Ring> rings{{{0, 0}, {4, 0}, {4, 0.5}, {0.5, 0.5}, {0.5, 3}, {0, 3}}};
+  for (int k = 0; k < 40; ++k) {
+    Ring r;
+    const int n = 3 + int(rng.below(10));
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * (i + 0.8 * rng.uniform()) / n, d = rng.uniform(0.3, 2.0);
+      r.push_back({d * std::cos(a) + 5, d * std::sin(a) - 3});
+    }
+    rings.push_back(r);
+  }
+  for (const Ring& r : rings) {
+    const Disc disc = inscribedDisc(r);
+    ASSERT_GT(disc.radius, 0);
+    for (int i = 0; i < 64; ++i) {
+      const double a = 2 * M_PI * i / 64;
+      EXPECT_TRUE(
+          insideRing(r, disc.center + 0.999 * disc.radius * Vec2{std::cos(a), std::sin(a)}));
+    }
+    double best = 0;
+    const Box b = boundingBox(r);
+    for (int i = 0; i <= 300; ++i)
+      for (int j = 0; j <= 300; ++j) {
+        const Vec2 p{b.xmin + b.width() * i / 300, b.ymin + b.height() * j / 300};
+        if (!insideRing(r, p)) continue;
+        double d = 1e9;
+        for (size_t e = 0, f = r.size() - 1; e < r.size(); f = e++)
+          d = std::min(d, pointSegmentDistance(p, r[f], r[e]));
+        best = std::max(best, d);
+      }
+    EXPECT_GT(disc.radius, 0.9 * best);
+  }
 }
 
 TEST(ShrinkForContacts, RejectsFeaturesBelowTheTolerance) {

@@ -22,7 +22,7 @@ TEST(Interrupt, CtrlCEndsPlanWithoutOutput) {
   const std::string out = dir.path("p.json"), stats = dir.path("s.json");
   Stopwatch clock;
   const Outcome r =
-      interruptLater("plan " + quote(scenario("one-robot/sealed-ring.json")) +
+      interruptLater("plan " + quote(scenario("one-robot/zigzag-slot.json")) +
                      " --time-limit 120 -o " + quote(out) + " --stats-json " + quote(stats));
   EXPECT_LT(clock.seconds(), 30.0);
   EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.out << r.err;
@@ -51,7 +51,7 @@ TEST(Interrupt, CtrlCEndsBenchWithoutRecordingInterruptedRuns) {
   Stopwatch clock;
   const Outcome r = runCommand(
       "( setsid " + std::string(MMS_BINARY) + " bench " +
-      quote(scenario("one-robot/sealed-ring.json")) +
+      quote(scenario("one-robot/zigzag-slot.json")) +
       " --planners mms --runs 2 --time-limit 30 --memory-limit 0 --jobs 2 -o " + quote(out) +
       " & pid=$!; sleep 2; /bin/kill -INT -- -$pid; wait $pid; echo \"rc=$?\" )");
   EXPECT_LT(clock.seconds(), 20.0);
@@ -65,7 +65,7 @@ TEST(Interrupt, BenchStopsWhenARunWasInterrupted) {
   TempDir dir;
   const std::string out = dir.path("b");
   const Outcome r = runCommand(
-      "( " + std::string(MMS_BINARY) + " bench " + quote(scenario("one-robot/sealed-ring.json")) +
+      "( " + std::string(MMS_BINARY) + " bench " + quote(scenario("one-robot/zigzag-slot.json")) +
       " --planners mms --runs 2 --time-limit 30 --memory-limit 0 --jobs 1 -o " + quote(out) +
       " & pid=$!; sleep 2; /bin/kill -INT $(pgrep -P $pid); wait $pid; echo \"rc=$?\" )");
   EXPECT_NE(r.out.find("rc=130"), std::string::npos) << r.out << r.err;

@@ -106,7 +106,7 @@ TEST(Portfolio, TheCallersCoresAreItsOwnAgainAfterTheRace) {
 
 // Where neither member finds a path both stop at the limit: the run ends "not found" on time.
 TEST(Portfolio, BothMembersStopAtTheLimit) {
-  const Scene scene = loadScene(test::scenario("one-robot/sealed-ring.json"));
+  const Scene scene = loadScene(test::scenario("one-robot/zigzag-slot.json"));
   const auto planner = makePlanner("auto", scene);
   const Stopwatch clock;
   const PlanResult r = planner->solve(Termination(1.0));

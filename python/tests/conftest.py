@@ -26,8 +26,10 @@ def square(half):
 
 def box_scene(wall=True):
     """A unit square robot crossing a 10 x 10 room; with `wall`, a wall from floor to ceiling
-    leaves no way through (the planner runs to its time limit)."""
-    obstacles = [[[4.5, 0], [5.5, 0], [5.5, 10], [4.5, 10]]] if wall else []
+    whose one slit (0.95) is narrower than the robot leaves no way through, and none that the
+    planner can prove (a disc inside the robot passes): the planner runs to its time limit."""
+    obstacles = [[[4.5, 0], [5.5, 0], [5.5, 4.525], [4.5, 4.525]],
+                 [[4.5, 5.475], [5.5, 5.475], [5.5, 10], [4.5, 10]]] if wall else []
     return {"format": "mms-scene/1", "name": "walled" if wall else "open",
             "bounds": [0, 0, 10, 10], "obstacles": obstacles,
             "robots": [{"name": "r", "shape": square(0.5), "start": [2, 5, 0],

@@ -81,6 +81,38 @@ double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
   return norm(p - closestPointOnSegment(p, a, b));
 }
 
+Disc inscribedDisc(const Ring& ring) {
+  // The distance to the boundary inside the ring, -1 outside.
+  auto depth = [&](Vec2 p) {
+    if (!insideRing(ring, p)) return -1.0;
+    double d = std::numeric_limits<double>::infinity();
+    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+      d = std::min(d, pointSegmentDistance(p, ring[j], ring[i]));
+    return d;
+  };
+  const Box b = boundingBox(ring);
+  constexpr int kGrid = 32;
+  Disc best;
+  for (int i = 0; i <= kGrid; ++i)
+    for (int j = 0; j <= kGrid; ++j) {
+      const Vec2 p{b.xmin + b.width() * i / kGrid, b.ymin + b.height() * j / kGrid};
+      if (const double d = depth(p); d > best.radius) best = {p, d};
+    }
+  if (best.radius <= 0) return {};
+  // Pattern search: the eight neighbours at a step halved until it is small against the box.
+  const double smallest = 1e-4 * std::max(b.width(), b.height());
+  for (double step = std::max(b.width(), b.height()) / kGrid; step > smallest;) {
+    bool moved = false;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy) {
+        const Vec2 p = best.center + step * Vec2{double(dx), double(dy)};
+        if (const double d = depth(p); d > best.radius) best = {p, d}, moved = true;
+      }
+    if (!moved) step /= 2;
+  }
+  return best;
+}
+
 namespace {
 // Squared distances: the certifier asks for millions of clearances, and one square root per
 // pair of rings costs less than a hypot per pair of segments.

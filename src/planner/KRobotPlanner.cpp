@@ -6,6 +6,7 @@
 
 #include "manifolds/CellSampling.h"
 #include "path/Motion.h"
+#include "planner/NoPath.h"
 #include "planner/Rounds.h"
 
 namespace mms {
@@ -313,6 +314,13 @@ KRobotResult KRobotPlanner::solveRounds(const Termination& stop,
   };
   h.next = [&] {
     if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds) return false;
+    // A second round without a path: before growing, whether any path exists (NoPath.h).
+    if (stats_.rounds == 2)
+      for (size_t r = 0; r < k_ && stats_.noPath.empty(); ++r)
+        if (!translates_[r])
+          stats_.noPath =
+              discCutOff(scene_, checker_, r, scene_.robots[r].start, scene_.robots[r].goal);
+    if (!stats_.noPath.empty()) return false;
     grownAtRoundStart = grown_;
     if (!anglesFirst(sequenceAngles_, translates_)) target *= 2;
     for (size_t r = 0; r < k_; ++r)

@@ -92,15 +92,6 @@ std::vector<double> narrowArcMiddles(std::span<const Line> lines, const LineWorl
   return middles;
 }
 
-std::string goalCutOffAlone(const Slice& alone, const Robot& robot) {
-  const int a = alone.locate({robot.start.x, robot.start.y}),
-            b = alone.locate({robot.goal.x, robot.goal.y});
-  if (a < 0 || b < 0 || a == b) return "";
-  return "robot '" + robot.name +
-         "' only translates, and its goal lies in another free region than its start among "
-         "the obstacles alone";
-}
-
 Scene withContactShapes(const Scene& scene, const CollisionChecker& checker) {
   Scene out = scene;
   for (Robot& r : out.robots) {

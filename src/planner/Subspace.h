@@ -33,13 +33,6 @@ struct SubspaceStats {
 /// motions inside cells stay certifiable.
 Scene withContactShapes(const Scene& scene, const CollisionChecker& checker);
 
-/// Why a translating robot cannot reach its goal, or "": when its start and goal lie in
-/// different cells of `alone`, its slice among the obstacles alone, it cannot get there even
-/// with every other robot gone, and the scene has no motion at all. The slice is built for the
-/// robot shrunk for contacts, whose free space holds the robot's own, so cells apart there are
-/// apart for the robot too. A point in no cell (within a hair of a contact) proves nothing.
-std::string goalCutOffAlone(const Slice& alone, const Robot& robot);
-
 /// Slices of `world` at `thetas`, built `threads` at a time and passed to `add` in the order of
 /// `thetas`, so what is built does not depend on the thread count. A build that throws (Stopped
 /// at the time limit) ends it: the slices before it have been added. Adds the seconds spent

@@ -8,6 +8,7 @@
 
 #include "geometry/PolygonOps.h"
 #include "path/Motion.h"
+#include "planner/NoPath.h"
 #include "planner/Rounds.h"
 #include "util/Deferred.h"
 #include "util/Parallel.h"
@@ -367,6 +368,13 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
   };
   h.next = [&] {
     if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds) return false;
+    // A second round without a path: before growing, whether any path exists (NoPath.h).
+    if (stats_.rounds == 2)
+      for (size_t r = 0; r < 2 && stats_.noPath.empty(); ++r)
+        if (!translates_[r])
+          stats_.noPath =
+              discCutOff(scene_, checker_, r, scene_.robots[r].start, scene_.robots[r].goal);
+    if (!stats_.noPath.empty()) return false;
     // Grow the angle sets: a narrow passage may need the two robots' angles closer than the
     // current sets offer (the Pacman's mouth and the square), or an angle the obstacles alone
     // allow (an L through a gap). While a set is small the fixings wait (anglesFirst).
