@@ -117,10 +117,7 @@ PlanStatus MmsPlanner::solveTranslation(const Pose& start, const Pose& goal, Mms
   if (slices().empty()) addSlice(start.theta);
   const Slice& s = slices().front();
   const int a = s.locate({start.x, start.y}), b = s.locate({goal.x, goal.y});
-  Robot moved = scene_.robots[0];
-  moved.start = start;
-  moved.goal = goal;
-  stats_.noPath = goalCutOffAlone(s, moved);
+  if (a >= 0 && b >= 0 && a != b) stats_.noPath = noPathAlone(scene_, checker_, 0, start, goal);
   if (a < 0 || a != b) return PlanStatus::NotFound;
   const auto route = routeInCell(s.cell(a), [&](Vec2 p) { return s.locate(p) == a; },
                                  {start.x, start.y}, {goal.x, goal.y});
@@ -198,10 +195,10 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
   h.report = [&] { report(true); };
   size_t roundsWithoutPath = 0;
   h.next = [&] {
-    // A second round without a path: before doubling, whether any path exists (NoPath.h). Not
-    // after the first: most runs that take two rounds would pay for it (a slice, 4 % of them).
+    // A second round without a path: before doubling, whether any path exists (NoPath.h). After
+    // the first, it would cost the runs that succeed in round two one more slice (4 % of them).
     if (++roundsWithoutPath == 2) {
-      stats_.noPath = discCutOff(scene_, checker_, 0, start, goal);
+      stats_.noPath = noPathAlone(scene_, checker_, 0, start, goal);
       if (!stats_.noPath.empty()) return false;
     }
     targetSlices *= 2;

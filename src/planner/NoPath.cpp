@@ -2,53 +2,89 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "geometry/Exact.h"
 #include "geometry/PolygonOps.h"
 
 namespace mms {
 
-std::string goalCutOffAlone(const Slice& alone, const Robot& robot) {
-  const int a = alone.locate({robot.start.x, robot.start.y}),
-            b = alone.locate({robot.goal.x, robot.goal.y});
-  if (a < 0 || b < 0 || a == b) return "";
-  return "robot '" + robot.name +
+namespace {
+
+// Whether `probe` (robot frame, translating at angle `theta`) has its positions `from` and `to`
+// in different cells of its exact free space among the obstacles alone.
+bool apartAlone(const Scene& scene, Ring probe, double theta, Vec2 from, Vec2 to) {
+  Scene alone;
+  alone.bounds = scene.bounds;
+  alone.obstacles = scene.obstacles;
+  alone.robots = {
+      {"probe", std::move(probe), {from.x, from.y, theta}, {to.x, to.y, theta}, Motion::Translate}};
+  const SliceWorld world(alone, 0);
+  const Slice slice(world, exact::rationalAngleNear(theta, 30));
+  const int a = slice.locate(from), b = slice.locate(to);
+  return a >= 0 && b >= 0 && a != b;
+}
+
+// Whether `inner` lies inside `outer` with at least `margin` to spare (both in the robot frame).
+bool insideWithMargin(const Ring& inner, const Ring& outer, double margin) {
+  for (size_t i = 0, j = inner.size() - 1; i < inner.size(); j = i++) {
+    if (!insideRing(outer, inner[i])) return false;
+    for (size_t k = 0, l = outer.size() - 1; k < outer.size(); l = k++)
+      if (pointSegmentDistance(inner[i], outer[l], outer[k]) < margin ||
+          segmentsIntersect(inner[j], inner[i], outer[l], outer[k]))
+        return false;
+  }
+  return true;
+}
+
+std::string translatingCutOff(const Scene& scene, const CollisionChecker& checker, size_t robot,
+                              const Pose& start, const Pose& goal) {
+  const double delta = checker.tolerance();
+  const ShrunkShape probe = shrinkForContacts(scene.robots[robot].shape, 2 * delta);
+  // The slice turns the probe by a rational angle within 2^-30 of the robot's: far less than the
+  // margin on any scene whose robots are smaller than a thousand times its extent.
+  if (probe.error || radius(probe.ring) * 0x1p-28 > delta / 4 ||
+      !insideWithMargin(probe.ring, checker.shrunkShape(robot), delta / 4))
+    return "";
+  if (!apartAlone(scene, probe.ring, start.theta, {start.x, start.y}, {goal.x, goal.y})) return "";
+  return "robot '" + scene.robots[robot].name +
          "' only translates, and its goal lies in another free region than its start among "
          "the obstacles alone";
 }
 
-std::string discCutOff(const Scene& scene, const CollisionChecker& checker, size_t robot,
-                       const Pose& start, const Pose& goal) {
+std::string rigidCutOff(const Scene& scene, const CollisionChecker& checker, size_t robot,
+                        const Pose& start, const Pose& goal) {
   const Disc disc = inscribedDisc(checker.shrunkShape(robot));
-  // A tenth of the radius to spare: the disc strictly inside the checker's shape, so a free
-  // robot leaves the polygon clear of every obstacle, rounding of its vertices included.
   const double r = 0.9 * disc.radius;
   if (!(r > 10 * checker.tolerance())) return "";
   constexpr int kSides = 16;
-  Robot probe{"disc", {}, {}, {}, Motion::Translate};
+  Ring probe;
   for (int k = 0; k < kSides; ++k) {
     const double a = 2 * M_PI * k / kSides;
-    probe.shape.push_back({r * std::cos(a), r * std::sin(a)});
+    probe.push_back({r * std::cos(a), r * std::sin(a)});
   }
-  auto centre = [&](const Pose& p) {
-    const Vec2 c = Transform(p)(disc.center);
-    return Pose{c.x, c.y, 0};
-  };
-  probe.start = centre(start);
-  probe.goal = centre(goal);
-  Scene alone;
-  alone.bounds = scene.bounds;
-  alone.obstacles = scene.obstacles;
-  alone.robots = {probe};
-  const SliceWorld world(alone, 0);
-  const Slice slice(world, exact::rationalAngleNear(0, 30));
-  const int a = slice.locate({probe.start.x, probe.start.y}),
-            b = slice.locate({probe.goal.x, probe.goal.y});
-  if (a < 0 || b < 0 || a == b) return "";
-  char radius[32];
-  std::snprintf(radius, sizeof radius, "%.3g", r);
+  const Vec2 from = Transform(start)(disc.center), to = Transform(goal)(disc.center);
+  // At angle 0 the slice's rotation is exactly the identity.
+  if (!apartAlone(scene, probe, 0, from, to)) return "";
+  char radiusText[32];
+  std::snprintf(radiusText, sizeof radiusText, "%.3g", r);
   return "robot '" + scene.robots[robot].name + "' cannot reach its goal: a disc of radius " +
-         radius + " inside it cannot get from its start to its goal among the obstacles alone";
+         radiusText + " inside it cannot get from its start to its goal among the obstacles alone";
+}
+
+}  // namespace
+
+bool apartIn(const Slice& alone, const Robot& robot) {
+  const int a = alone.locate({robot.start.x, robot.start.y}),
+            b = alone.locate({robot.goal.x, robot.goal.y});
+  return a >= 0 && b >= 0 && a != b;
+}
+
+std::string noPathAlone(const Scene& scene, const CollisionChecker& checker, size_t robot,
+                        const Pose& start, const Pose& goal) {
+  return scene.robots[robot].motion == Motion::Translate
+             ? translatingCutOff(scene, checker, robot, start, goal)
+             : rigidCutOff(scene, checker, robot, start, goal);
 }
 
 }  // namespace mms
