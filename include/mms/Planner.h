@@ -68,8 +68,8 @@ struct PlanStatistics {
   /// path already found (afterFirstPath: "optimize", OMPL's "simplify"), which come after it.
   std::vector<std::pair<std::string, double>> phases;
   std::string solvedBy;  // a portfolio's member whose path this is ("" otherwise)
-  /// Why no path exists, when the planner proved it ("" otherwise): a translating robot whose
-  /// goal lies in another free region than its start among the obstacles alone.
+  /// Why no path exists, when the planner proved it ("" otherwise): a robot that cannot reach
+  /// its goal even alone among the obstacles (docs/planner.md, "no path exists").
   std::string noPath;
 };
 

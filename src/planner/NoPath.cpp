@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <optional>
 
 #include "geometry/Exact.h"
 #include "geometry/PolygonOps.h"
