@@ -272,10 +272,9 @@ KRobotResult KRobotPlanner::solveRounds(const Termination& stop,
     return finish(result, stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound);
   // A translating robot whose start and goal its one slice puts apart may have no motion at all:
   // the proof (NoPath.h) then ends the search here instead of at the time limit.
-  for (size_t r = 0; r < k_ && stats_.noPath.empty(); ++r)
-    if (translates_[r] && apartIn(base_[r].front(), scene_.robots[r]))
-      stats_.noPath =
-          noPathAlone(scene_, checker_, r, scene_.robots[r].start, scene_.robots[r].goal);
+  stats_.noPath = noPathOfAny(scene_, checker_, [&](size_t r) {
+    return translates_[r] && apartIn(base_[r].front(), scene_.robots[r]);
+  });
   if (!stats_.noPath.empty()) return finish(result, PlanStatus::NotFound);
   for (size_t r = 0; r < k_; ++r) {
     const Robot& rb = scene_.robots[r];
@@ -320,10 +319,7 @@ KRobotResult KRobotPlanner::solveRounds(const Termination& stop,
     // A second round without a path: before growing, whether any path exists (NoPath.h; with
     // maxRounds, a test setting, of 2 or less it never runs).
     if (stats_.rounds == 2)
-      for (size_t r = 0; r < k_ && stats_.noPath.empty(); ++r)
-        if (!translates_[r])
-          stats_.noPath =
-              noPathAlone(scene_, checker_, r, scene_.robots[r].start, scene_.robots[r].goal);
+      stats_.noPath = noPathOfAny(scene_, checker_, [&](size_t r) { return !translates_[r]; });
     if (!stats_.noPath.empty()) return false;
     grownAtRoundStart = grown_;
     if (!anglesFirst(sequenceAngles_, translates_)) target *= 2;

@@ -86,4 +86,14 @@ std::string noPathAlone(const Scene& scene, const CollisionChecker& checker, siz
              : rigidCutOff(scene, checker, robot, start, goal);
 }
 
+std::string noPathOfAny(const Scene& scene, const CollisionChecker& checker,
+                        const std::function<bool(size_t robot)>& asks) {
+  for (size_t r = 0; r < scene.robots.size(); ++r)
+    if (asks(r)) {
+      std::string why = noPathAlone(scene, checker, r, scene.robots[r].start, scene.robots[r].goal);
+      if (!why.empty()) return why;
+    }
+  return "";
+}
+
 }  // namespace mms

@@ -10,6 +10,7 @@
 // that free space, the robot has no motion. The probe keeps a margin to the checker's shape, so
 // a free robot leaves it clear of every obstacle with room to spare for the rounding of its
 // vertices and of the slice's rational angle.
+#include <functional>
 #include <string>
 
 #include "geometry/CollisionChecker.h"
@@ -29,6 +30,11 @@ namespace mms {
 ///   not one behind a bend too tight for a long robot to turn.
 std::string noPathAlone(const Scene& scene, const CollisionChecker& checker, size_t robot,
                         const Pose& start, const Pose& goal);
+
+/// The proof (noPathAlone, from the scene's start to its goal) of the first robot for which
+/// `asks` holds and whose proof holds, or "".
+std::string noPathOfAny(const Scene& scene, const CollisionChecker& checker,
+                        const std::function<bool(size_t robot)>& asks);
 
 /// Whether a translating robot's planner slice `alone` (its one angle, among the obstacles
 /// alone) puts its start and goal in different cells. It proves nothing, but where they share

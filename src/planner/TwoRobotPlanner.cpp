@@ -320,10 +320,9 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     return finish(result, stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound);
   // A translating robot whose start and goal its one slice puts apart may have no motion at all:
   // the proof (NoPath.h) then ends the search here instead of at the time limit.
-  for (size_t r = 0; r < 2 && stats_.noPath.empty(); ++r)
-    if (translates_[r] && apartIn(base_[r].front(), scene_.robots[r]))
-      stats_.noPath =
-          noPathAlone(scene_, checker_, r, scene_.robots[r].start, scene_.robots[r].goal);
+  stats_.noPath = noPathOfAny(scene_, checker_, [&](size_t r) {
+    return translates_[r] && apartIn(base_[r].front(), scene_.robots[r]);
+  });
   if (!stats_.noPath.empty()) return finish(result, PlanStatus::NotFound);
   // Start and goal fixings: each robot held at its start and at its goal. A translating
   // robot's poses lie in its one slice; a rigid robot's on lines 0 (start) and 1 (goal).
@@ -374,10 +373,7 @@ TwoRobotResult TwoRobotPlanner::solveRounds(
     // A second round without a path: before growing, whether any path exists (NoPath.h; with
     // maxRounds, a test setting, of 2 or less it never runs).
     if (stats_.rounds == 2)
-      for (size_t r = 0; r < 2 && stats_.noPath.empty(); ++r)
-        if (!translates_[r])
-          stats_.noPath =
-              noPathAlone(scene_, checker_, r, scene_.robots[r].start, scene_.robots[r].goal);
+      stats_.noPath = noPathOfAny(scene_, checker_, [&](size_t r) { return !translates_[r]; });
     if (!stats_.noPath.empty()) return false;
     // Grow the angle sets: a narrow passage may need the two robots' angles closer than the
     // current sets offer (the Pacman's mouth and the square), or an angle the obstacles alone
