@@ -1,7 +1,7 @@
 // Degenerate geometry: obstacles touching each other and the bounds, collinear and overlapping
 // edges, duplicated obstacles (coincident critical angles), a start touching an obstacle, a gap
-// exactly as wide as the robot, hundreds of obstacles. Cells and arcs are checked against the
-// collision checker; planned paths against the continuous path checker.
+// exactly as wide as the robot, hundreds of obstacles, scenes in any unit. Cells and arcs are
+// checked against the collision checker; planned paths against the continuous path checker.
 //
 // Decision for zero clearance (docs/robustness.md): contacts up to the scene's tolerance count
 // as touching, so a gap exactly the robot's width is passable. A translating robot passes it
@@ -19,6 +19,7 @@
 #include "io/SceneIO.h"
 #include "manifolds/Line.h"
 #include "manifolds/Slice.h"
+#include "mms/Planner.h"
 #include "planner/MmsPlanner.h"
 #include "scenarios/RandomScene.h"
 
@@ -156,6 +157,44 @@ TEST(Degenerate, HundredsOfObstacles) {
   if (r.status == PlanStatus::Found) {
     const CollisionChecker checker(s);
     EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
+  }
+}
+
+// The same scene in other units: every length times `k`, angles kept.
+Scene scaled(const Scene& s, double k) {
+  Scene out = s;
+  out.bounds = {k * s.bounds.xmin, k * s.bounds.ymin, k * s.bounds.xmax, k * s.bounds.ymax};
+  for (Ring& o : out.obstacles)
+    for (Vec2& v : o) v = k * v;
+  for (Robot& r : out.robots) {
+    for (Vec2& v : r.shape) v = k * v;
+    r.start = {k * r.start.x, k * r.start.y, r.start.theta};
+    r.goal = {k * r.goal.x, k * r.goal.y, r.goal.theta};
+  }
+  return load(out);
+}
+
+// A scene drawn in millimetres or in kilometres is the same problem: the contact tolerance and
+// the motion-check resolution are fractions of the bounds, and exact geometry has no unit. A
+// user's scene in micrometres or in metres of a 1 km site must plan as the bundled one does.
+TEST(Degenerate, AnySceneUnitPlansTheSame) {
+  for (const char* file : {"one-robot/bar-slot.json", "two-robots/niche-swap.json"}) {
+    const Scene base = loadScene(test::scenario(file));
+    for (const double k : {1e-3, 1e3}) {
+      const Scene s = scaled(base, k);
+      const CollisionChecker checker(s);
+      for (const char* planner : {"mms", "auto"}) {
+        PlannerParams params;
+        params.seed = 1;
+        const PlanResult r =
+            makePlanner(planner, s, params)->solve(Termination(test::planSeconds(10)));
+        ASSERT_TRUE(r.found()) << file << " x" << k << " " << planner;
+        const PathCheckResult c = checkPath(s, checker, r.waypoints);
+        EXPECT_TRUE(c.ok) << file << " x" << k << " " << planner << ": " << c.reason;
+        // The path stays inside the scaled bounds, so its length is of the scene's size.
+        EXPECT_LT(c.translation, 100 * k * base.bounds.width()) << file << " x" << k;
+      }
+    }
   }
 }
 
