@@ -10,7 +10,8 @@ flags=(-DCMAKE_BUILD_TYPE=Release)
 if [ "${1:-}" = "--sanitize" ]; then
   dir=build-asan
   # Line tables (-g1) are what the sanitizers' reports need; full debug information made the
-  # heaviest CGAL translation unit compile 14 % slower (105 s against 90 s) and need 1 GB more memory (4.2 GB).
+  # heaviest CGAL translation unit compile 14 % slower (105 s against 90 s) and take 1 GB more
+  # memory (4.2 GB).
   flags=(-DCMAKE_BUILD_TYPE=Debug -DMMS_SANITIZE=ON -DMMS_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS_DEBUG=-g1)
 fi
 
