@@ -175,8 +175,8 @@ TEST(Limits, MemoryLimitEndsThePlanWithOutOfMemoryAndNoFile) {
   const test::Outcome r = test::runMms(
       "plan " + test::quote(scene) + " --memory-limit 100 --time-limit 60 -o " + test::quote(out));
   EXPECT_EQ(r.code, 3) << r.out << r.err;
-  // The message ends stderr. Before it, a run slowed by a loaded machine past 5 s may have said
-  // it still works (the heartbeat); nothing else.
+  // The message ends stderr. Before it, a run slowed by a loaded machine may have reported
+  // progress (a round ending after 1 s, the heartbeat after 5 s); nothing else.
   const std::string message = "mms: out of memory (see --memory-limit); no output written\n";
   ASSERT_GE(r.err.size(), message.size()) << r.err;
   EXPECT_EQ(r.err.substr(r.err.size() - message.size()), message) << r.err;
