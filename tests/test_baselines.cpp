@@ -8,6 +8,7 @@
 #include "baselines/UobprmSampler.h"
 #include "io/SceneIO.h"
 #include "mms/Planner.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 using namespace mms::test;
@@ -50,6 +51,23 @@ TEST(Ompl, EveryPlannerRunsAndOnlyCertifiedPathsAreFound) {
     }
   }
   EXPECT_GE(found, 3);
+}
+
+// With motions certified as they are added, the trees and roadmaps hold certified paths: the
+// planners that ask only whether a motion is free (RRT-Connect, PRM) and those that keep its
+// certified beginning (RRT, KPIECE) find paths the certifier accepts, on one robot and two.
+TEST(Ompl, CertifiedMotionsGiveCertifiedPaths) {
+  for (const Scene& s : {openClutterScene(2), randomPolygonsTwoRobots(3)}) {
+    const CollisionChecker checker(s);
+    for (const char* name : {"rrtconnect", "prm", "rrt", "kpiece"}) {
+      OmplSettings st;
+      st.planner = name;
+      st.certifiedMotions = true;
+      const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(10)));
+      ASSERT_EQ(r.status, PlanStatus::Found) << s.name << " " << name;
+      EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << s.name << " " << name;
+    }
+  }
 }
 
 TEST(Ompl, CoarseResolutionPathsAreCheckedNotTrusted) {

@@ -3,11 +3,13 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "Support.h"
 #include "check/PathChecker.h"
 #include "io/PathIO.h"
 #include "io/SceneIO.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 using namespace mms::test;
@@ -152,6 +154,55 @@ TEST(TwoRobots, RobotsPassingThroughEachOtherAreRejected) {
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.reason.find("robot 'left' hits robot 'right'"), std::string::npos) << r.reason;
   EXPECT_NEAR(r.parameter, 0.45, 0.01);  // they meet when 10 - 20 s = 1 (their width)
+}
+
+// ---- one motion at a time, as the sampling planners ask ----
+
+// motionFree is the certifier's test of one segment: on random motions of two robots among
+// clutter (free, hitting obstacles, hitting each other, turning into walls) it agrees with
+// checkMotion's verdict every time.
+TEST(MotionFree, AgreesWithTheCertifierOnRandomMotions) {
+  for (const Scene& s : {randomPolygonsTwoRobots(4), openClutterScene(3)}) {
+    const CollisionChecker c(s);
+    std::mt19937_64 rng(7);
+    const Box& b = s.bounds;
+    std::uniform_real_distribution<double> x(b.xmin, b.xmax), y(b.ymin, b.ymax), turn(-M_PI, M_PI),
+        step(-0.15, 0.15);
+    int free = 0, refused = 0;
+    for (int n = 0; n < 400; ++n) {
+      Config a(s.dof()), e(s.dof());
+      for (size_t i = 0; i < s.robots.size(); ++i) {
+        a[3 * i] = x(rng), a[3 * i + 1] = y(rng), a[3 * i + 2] = turn(rng);
+        e[3 * i] = a[3 * i] + step(rng) * b.width();
+        e[3 * i + 1] = a[3 * i + 1] + step(rng) * b.height();
+        e[3 * i + 2] = a[3 * i + 2] + 2 * step(rng) * M_PI;
+      }
+      if (!c.isFree(a)) continue;
+      const bool certified = checkMotion(s, c, {a, e}).ok;
+      ASSERT_EQ(motionFree(c, a, e), certified) << s.name << " motion " << n;
+      ++(certified ? free : refused);
+    }
+    EXPECT_GE(free, 20) << s.name;
+    EXPECT_GE(refused, 20) << s.name;
+  }
+}
+
+// Straight through the wall: the motion is certified up to the bar's first contact (x = -1.4,
+// at 4.6 / 12 of it; contacts as deep as the tolerance count as touching), and no further.
+TEST_F(BarSlot, CertifiedPrefixEndsAtTheFirstContact) {
+  const CollisionChecker c(s);
+  const Config a{-6, 0, kHalfPi}, e{6, 0, kHalfPi};
+  EXPECT_FALSE(motionFree(c, a, e));
+  const double t = certifiedPrefix(c, a, e), contact = 4.6 / 12;
+  EXPECT_LE(t, contact + c.tolerance() / 12);
+  EXPECT_GT(t, contact - 1e-3);
+  const Config reached{-6 + 12 * t, 0, kHalfPi};
+  EXPECT_TRUE(checkMotion(s, c, {a, reached}).ok);
+  // A free motion is certified whole; a turn into the wall is refused.
+  EXPECT_EQ(certifiedPrefix(c, a, Config{-3.5, 0, kHalfPi}), 1.0);
+  EXPECT_TRUE(motionFree(c, a, Config{-3.5, 0, kHalfPi}));
+  EXPECT_FALSE(motionFree(c, Config{-3.5, 0, kHalfPi}, Config{-3.5, 0, 0}));
+  EXPECT_LT(certifiedPrefix(c, Config{-3.5, 0, kHalfPi}, Config{-3.5, 0, 0}), 1.0);
 }
 
 // ---- the CLI on the bundled scenarios, with corrupted variants ----

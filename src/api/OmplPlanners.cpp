@@ -82,6 +82,20 @@ std::vector<PlannerInfo> omplPlannerInfos() {
   const ParamSpec simplify{
       "simplify", Type::Flag,         0,
       1,          double(d.simplify), "OMPL planners: run OMPL's path simplifier on the solution"};
+  const ParamSpec certified{"certified-motions",
+                            Type::Flag,
+                            0,
+                            1,
+                            double(d.certifiedMotions),
+                            "OMPL planners: check motions with mms's continuous certifier instead "
+                            "of discrete poses at the resolution"};
+  const ParamSpec free{"free-samples",
+                       Type::Flag,
+                       0,
+                       1,
+                       double(d.freeSamples),
+                       "OMPL planners: redraw uniform samples until collision-free (up to 100 "
+                       "draws), so that trees grow towards free space only"};
   const Entry entries[] = {
       {"prm", "OMPL PRM (uniform samples)", false, true, false},
       {"obprm", "OMPL PRM with OMPL's obstacle-based sampler", false, true, false},
@@ -110,6 +124,8 @@ std::vector<PlannerInfo> omplPlannerInfos() {
     if (e.neighbours) info.params.push_back(k);
     if (e.segment) info.params.push_back(segment);
     info.params.push_back(simplify);
+    info.params.push_back(certified);
+    info.params.push_back(free);
     const std::string name = e.name;
     const std::vector<ParamSpec> specs = info.params;
     info.make = [name, specs](const Scene& scene, const PlannerParams& params,
@@ -127,6 +143,8 @@ std::vector<PlannerInfo> omplPlannerInfos() {
         if (spec.name == "k") s.neighbours = unsigned(v);
         if (spec.name == "segment-factor") s.segmentFactor = v;
         if (spec.name == "simplify") s.simplify = v != 0;
+        if (spec.name == "certified-motions") s.certifiedMotions = v != 0;
+        if (spec.name == "free-samples") s.freeSamples = v != 0;
       }
       return std::make_unique<OmplAdapter>(scene, s, std::move(used));
     };

@@ -31,7 +31,6 @@ namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
 namespace {
-
 // State <-> configuration: robot i is component i (SE(2), or R^2 keeping its start angle).
 struct Layout {
   const Scene& scene;
@@ -82,6 +81,81 @@ class Validity : public ob::StateValidityChecker {
  private:
   const Layout& layout_;
   const CollisionChecker& checker_;
+};
+
+// Motions certified as continuous, as mms certifies paths: in open space a few clearance
+// evaluations cover a motion that OMPL's discrete validator checks at hundreds of poses, and
+// a tree or roadmap built of certified motions yields a path the certifier accepts.
+class CertifiedMotions : public ob::MotionValidator {
+ public:
+  CertifiedMotions(const ob::SpaceInformationPtr& si, const Layout& layout,
+                   const CollisionChecker& checker)
+      : ob::MotionValidator(si), layout_(layout), checker_(checker) {}
+  bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
+    load(s1, s2);
+    return counted(motionFree(checker_, a_, b_));
+  }
+  /// Where the motion stops being certified, for planners that keep a refused motion's start
+  /// (RRT, KPIECE).
+  bool checkMotion(const ob::State* s1, const ob::State* s2,
+                   std::pair<ob::State*, double>& lastValid) const override {
+    load(s1, s2);
+    const double t = certifiedPrefix(checker_, a_, b_);
+    if (t < 1) {
+      if (lastValid.first) si_->getStateSpace()->interpolate(s1, s2, t, lastValid.first);
+      lastValid.second = t;
+    }
+    return counted(t >= 1);
+  }
+
+ private:
+  /// The motion's ends, angles turning the short way as OMPL interpolates SO(2).
+  void load(const ob::State* s1, const ob::State* s2) const {
+    layout_.toConfig(s1, a_);
+    layout_.toConfig(s2, b_);
+    for (size_t i = 0; i + 2 < b_.size(); i += 3)
+      b_[i + 2] = a_[i + 2] + std::remainder(b_[i + 2] - a_[i + 2], 2 * M_PI);
+  }
+  bool counted(bool ok) const {
+    (ok ? valid_ : invalid_)++;
+    return ok;
+  }
+
+  const Layout& layout_;
+  const CollisionChecker& checker_;
+  mutable Config a_, b_;  // OMPL's planners check motions on one thread
+};
+
+// Uniform samples drawn again until free: a tree then grows only towards free space. Where
+// the free space is a corridor through a large box (a bend), most uniform samples fall in the
+// walls, and RRT-Connect pays a nearest-neighbour search and a refused motion for each; a
+// collision test per redrawn sample costs less. After kTries draws the last one is kept, so a
+// scene with almost no free space is sampled as before.
+class FreeSampler : public ob::StateSampler {
+ public:
+  static constexpr int kTries = 100;
+  FreeSampler(const ob::StateSpace* space, ob::StateSamplerPtr uniform, const Layout& layout,
+              const CollisionChecker& checker)
+      : ob::StateSampler(space), uniform_(std::move(uniform)), layout_(layout), checker_(checker) {}
+  void sampleUniform(ob::State* state) override {
+    for (int i = 0; i < kTries; ++i) {
+      uniform_->sampleUniform(state);
+      layout_.toConfig(state, q_);
+      if (checker_.isFree(q_)) return;
+    }
+  }
+  void sampleUniformNear(ob::State* state, const ob::State* near, double distance) override {
+    uniform_->sampleUniformNear(state, near, distance);
+  }
+  void sampleGaussian(ob::State* state, const ob::State* mean, double stdDev) override {
+    uniform_->sampleGaussian(state, mean, stdDev);
+  }
+
+ private:
+  ob::StateSamplerPtr uniform_;
+  const Layout& layout_;
+  const CollisionChecker& checker_;
+  Config q_;
 };
 
 // KPIECE needs a projection: the robots' reference points (2-D for one robot, 4-D for two),
@@ -229,6 +303,8 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   const ob::SpaceInformationPtr si = setup.getSpaceInformation();
   setup.setStateValidityChecker(std::make_shared<Validity>(si, layout, checker));
   si->setStateValidityCheckingResolution(settings.resolution);
+  if (settings.certifiedMotions)
+    si->setMotionValidator(std::make_shared<CertifiedMotions>(si, layout, checker));
   const double extent = si->getMaximumExtent();
   setup.setPlanner(makePlanner(si, settings, extent));
   if (settings.planner == "rrtstar" || settings.planner == "bitstar")
@@ -238,6 +314,12 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   layout.fromConfig(startConfig(scene), start.get());
   layout.fromConfig(goalConfig(scene), goal.get());
   setup.setStartAndGoalStates(start, goal);
+  if (settings.freeSamples) {
+    ob::StateSpace* space = setup.getStateSpace().get();
+    space->setStateSamplerAllocator([space, &layout, &checker](const ob::StateSpace* s) {
+      return std::make_shared<FreeSampler>(s, space->allocDefaultStateSampler(), layout, checker);
+    });
+  }
   setup.setup();
 
   OmplResult r;

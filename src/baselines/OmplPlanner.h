@@ -22,6 +22,12 @@ struct OmplSettings {
   unsigned neighbours = 0;    // PRM family: k nearest neighbours; 0 = OMPL's default
   double segmentFactor = 10;  // U-OB-PRM: segment length l = factor x resolution x extent
   bool simplify = false;      // OMPL's path simplifier on the returned path
+  /// Motions checked by mms's continuous certifier (clearance against the motion's
+  /// displacement bound) instead of OMPL's discrete checks at `resolution`.
+  bool certifiedMotions = false;
+  /// Uniform samples redrawn until collision-free (up to 100 draws): the tree planners grow
+  /// towards free space only.
+  bool freeSamples = false;
   /// Leave OMPL's planner and states allocated (a command-line run about to exit): freeing
   /// a million states would overrun the time limit by seconds.
   bool keepUntilExit = false;

@@ -247,3 +247,136 @@ PathCheckResult checkMotion(const Scene& scene, const CollisionChecker& checker,
 }
 
 }  // namespace mms
+
+namespace mms {
+namespace {
+
+/// One straight motion tested piece by piece as the certifier does, without its report: what
+/// a sampling planner asks of every motion it adds.
+class MotionTest {
+ public:
+  MotionTest(const CollisionChecker& checker, const Config& a, const Config& b)
+      : checker_(checker), a_(a), b_(b), k_(checker.robotCount()) {
+    thread_local std::vector<double> rate;
+    rate.assign(k_, 0.0);
+    double length = 0;
+    for (size_t i = 0; i < k_; ++i) {
+      const double dp = std::hypot(b[3 * i] - a[3 * i], b[3 * i + 1] - a[3 * i + 1]);
+      rate[i] = dp + checker.radius(i) * std::fabs(b[3 * i + 2] - a[3 * i + 2]);
+      maxRate_ = std::max(maxRate_, rate[i]);
+      length += rate[i];
+    }
+    rate_ = rate.data();
+    // A motion that grazes a contact would need pieces as short as the tolerance: it is
+    // refused after about as many evaluations as pieces a quarter of the tolerance long.
+    budget_ = 1000 + size_t(std::min(1e6, 4 * length / checker.tolerance()));
+  }
+  MotionTest(const MotionTest&) = delete;
+  MotionTest& operator=(const MotionTest&) = delete;
+
+  /// Collision: a robot hits something at the piece's middle. Refused: the piece is as short as
+  /// the tolerance allows and still not certified, or the evaluations ran out.
+  enum class Status { Collision, Refused, Uncertified, Certified };
+  /// Robots that stay put, at s = 0 (free of contact).
+  bool stillOnesFree() const { return evaluate(0.0, 0.0, false) != Status::Collision; }
+  /// The moving robots over [mid - half, mid + half].
+  Status piece(double mid, double half) {
+    if (++evaluations_ > budget_) return Status::Refused;
+    const Status st = evaluate(mid, half, true);
+    if (st == Status::Uncertified && half * maxRate_ < 0.25 * checker_.tolerance())
+      return Status::Refused;
+    return st;
+  }
+
+ private:
+  Pose pose(size_t i, double s) const {
+    auto lerp = [&](size_t c) { return a_[c] + s * (b_[c] - a_[c]); };
+    return {lerp(3 * i), lerp(3 * i + 1), lerp(3 * i + 2)};
+  }
+  Status evaluate(double s, double half, bool movingOnly) const {
+    Status st = Status::Certified;
+    auto note = [&](double distance, double bound) {
+      if (distance <= 0) return false;
+      if (distance <= bound) st = Status::Uncertified;
+      return true;
+    };
+    for (size_t i = 0; i < k_; ++i) {
+      if (movingOnly != (rate_[i] > 0)) continue;
+      const double bound = half * rate_[i];
+      if (!note(checker_.robotClearance(i, pose(i, s), std::nextafter(bound, kInf)).distance,
+                bound))
+        return Status::Collision;
+    }
+    for (size_t i = 0; i < k_; ++i)
+      for (size_t j = i + 1; j < k_; ++j) {
+        if (movingOnly != (rate_[i] > 0 || rate_[j] > 0)) continue;
+        const double bound = half * (rate_[i] + rate_[j]);
+        if (!note(
+                checker_.robotsDistance(i, pose(i, s), j, pose(j, s), std::nextafter(bound, kInf)),
+                bound))
+          return Status::Collision;
+      }
+    return st;
+  }
+
+  const CollisionChecker& checker_;
+  const Config &a_, &b_;
+  size_t k_;
+  const double* rate_ = nullptr;
+  double maxRate_ = 0;
+  size_t budget_ = 0, evaluations_ = 0;
+};
+
+}  // namespace
+
+bool motionFree(const CollisionChecker& checker, const Config& a, const Config& b) {
+  // Where a motion ends is where a tree's extension usually collides: a collision test there
+  // (cheaper than a clearance) refuses most motions at once, as OMPL's discrete validator does.
+  if (!checker.isFree(b)) return false;
+  MotionTest test(checker, a, b);
+  if (!test.stillOnesFree()) return false;
+  // Breadth first: a motion that hits something is refused after a few evaluations.
+  thread_local std::vector<Piece> queue;
+  queue.assign(1, {0.0, 1.0});
+  for (size_t head = 0; head < queue.size(); ++head) {
+    const Piece p = queue[head];
+    const double half = 0.5 * (p.s1 - p.s0), mid = p.s0 + half;
+    const MotionTest::Status st = test.piece(mid, half);
+    if (st == MotionTest::Status::Collision || st == MotionTest::Status::Refused) return false;
+    if (st == MotionTest::Status::Uncertified) {
+      queue.push_back({p.s0, mid});
+      queue.push_back({mid, p.s1});
+    }
+  }
+  return true;
+}
+
+double certifiedPrefix(const CollisionChecker& checker, const Config& a, const Config& b) {
+  MotionTest test(checker, a, b);
+  if (!test.stillOnesFree()) return 0;
+  // Depth first, left to right: the certified pieces join up from 0. After a collision only
+  // what lies before it is searched further.
+  thread_local std::vector<Piece> stack;
+  stack.assign(1, {0.0, 1.0});
+  double collision = 2, certified = 0;
+  while (!stack.empty()) {
+    const Piece p = stack.back();
+    stack.pop_back();
+    if (p.s0 >= collision) continue;
+    const double half = 0.5 * (p.s1 - p.s0), mid = p.s0 + half;
+    const MotionTest::Status st = test.piece(mid, half);
+    if (st == MotionTest::Status::Refused) return certified;
+    if (st == MotionTest::Status::Certified) {
+      certified = p.s1;
+    } else if (st == MotionTest::Status::Collision) {
+      collision = mid;
+      stack.push_back({p.s0, mid});
+    } else if (st == MotionTest::Status::Uncertified) {
+      stack.push_back({mid, p.s1});
+      stack.push_back({p.s0, mid});
+    }
+  }
+  return certified;
+}
+
+}  // namespace mms

@@ -8,11 +8,10 @@
 // tolerance, so touching contacts are allowed and penetration beyond the tolerance is not.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "geometry/CollisionChecker.h"
 #include "mms/Certificate.h"
-#include <vector>
-
 #include "mms/Scene.h"
 
 namespace mms {
@@ -33,5 +32,14 @@ PathCheckResult checkPath(const Scene& scene, const CollisionChecker& checker,
 PathCheckResult checkMotion(const Scene& scene, const CollisionChecker& checker,
                             const std::vector<Config>& waypoints,
                             const PathCheckSettings& settings = {});
+
+/// Whether the straight motion from a to b is certified free: the test of checkMotion for one
+/// segment, without its report, refusing at the first evaluation that fails.
+bool motionFree(const CollisionChecker& checker, const Config& a, const Config& b);
+
+/// How far the straight motion from a to b is certified free, as a fraction of it: 1 when all
+/// of it is, else the end of its longest certified beginning that the certifier's pieces find
+/// (0 when a robot that stays put touches something).
+double certifiedPrefix(const CollisionChecker& checker, const Config& a, const Config& b);
 
 }  // namespace mms
