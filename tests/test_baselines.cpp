@@ -55,18 +55,22 @@ TEST(Ompl, EveryPlannerRunsAndOnlyCertifiedPathsAreFound) {
 
 // With motions certified as they are added, the trees and roadmaps hold certified paths: the
 // planners that ask only whether a motion is free (RRT-Connect, PRM) and those that keep its
-// certified beginning (RRT, KPIECE) find paths the certifier accepts, on one robot and two.
+// certified beginning (RRT, KPIECE) find paths the certifier accepts, on one robot and two,
+// with uniform samples or samples redrawn until free (the portfolio's RRT-Connect).
 TEST(Ompl, CertifiedMotionsGiveCertifiedPaths) {
-  for (const Scene& s : {openClutterScene(2), randomPolygonsTwoRobots(3)}) {
+  for (const Scene& s : {openClutterScene(2), bendScene(3), randomPolygonsTwoRobots(3)}) {
     const CollisionChecker checker(s);
-    for (const char* name : {"rrtconnect", "prm", "rrt", "kpiece"}) {
-      OmplSettings st;
-      st.planner = name;
-      st.certifiedMotions = true;
-      const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(10)));
-      ASSERT_EQ(r.status, PlanStatus::Found) << s.name << " " << name;
-      EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << s.name << " " << name;
-    }
+    for (const char* name : {"rrtconnect", "prm", "rrt", "kpiece"})
+      for (const bool free : {false, true}) {
+        OmplSettings st;
+        st.planner = name;
+        st.certifiedMotions = true;
+        st.freeSamples = free;
+        const std::string what = s.name + " " + name + (free ? " free samples" : "");
+        const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(10)));
+        ASSERT_EQ(r.status, PlanStatus::Found) << what << ": " << r.certificate.reason;
+        EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << what;
+      }
   }
 }
 

@@ -187,17 +187,19 @@ TEST(MotionFree, AgreesWithTheCertifierOnRandomMotions) {
   }
 }
 
-// Straight through the wall: the motion is certified up to the bar's first contact (x = -1.4,
-// at 4.6 / 12 of it; contacts as deep as the tolerance count as touching), and no further.
+// Straight through the wall: the motion is certified up to just before the bar's first contact
+// (x = -1.4, at 4.6 / 12 of it), to a pose at least the tolerance away from the wall, from which
+// another motion can be certified (the way back).
 TEST_F(BarSlot, CertifiedPrefixEndsAtTheFirstContact) {
   const CollisionChecker c(s);
   const Config a{-6, 0, kHalfPi}, e{6, 0, kHalfPi};
   EXPECT_FALSE(motionFree(c, a, e));
   const double t = certifiedPrefix(c, a, e), contact = 4.6 / 12;
-  EXPECT_LE(t, contact + c.tolerance() / 12);
+  EXPECT_LT(t, contact);
   EXPECT_GT(t, contact - 1e-3);
   const Config reached{-6 + 12 * t, 0, kHalfPi};
-  EXPECT_TRUE(checkMotion(s, c, {a, reached}).ok);
+  EXPECT_GE(c.robotClearance(0, poseOf(reached, 0)).distance, c.tolerance());
+  EXPECT_TRUE(checkMotion(s, c, {a, reached, a}).ok);
   // A free motion is certified whole; a turn into the wall is refused.
   EXPECT_EQ(certifiedPrefix(c, a, Config{-3.5, 0, kHalfPi}), 1.0);
   EXPECT_TRUE(motionFree(c, a, Config{-3.5, 0, kHalfPi}));

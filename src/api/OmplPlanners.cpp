@@ -89,13 +89,14 @@ std::vector<PlannerInfo> omplPlannerInfos() {
                             double(d.certifiedMotions),
                             "OMPL planners: check motions with mms's continuous certifier instead "
                             "of discrete poses at the resolution"};
-  const ParamSpec free{"free-samples",
-                       Type::Flag,
-                       0,
-                       1,
-                       double(d.freeSamples),
-                       "OMPL planners: redraw uniform samples until collision-free (up to 100 "
-                       "draws), so that trees grow towards free space only"};
+  const ParamSpec free{
+      "free-samples",
+      Type::Flag,
+      0,
+      1,
+      double(d.freeSamples),
+      "OMPL planners: redraw each robot's uniform samples until it is clear of the "
+      "obstacles (up to 100 draws), so that trees grow towards free space"};
   const Entry entries[] = {
       {"prm", "OMPL PRM (uniform samples)", false, true, false},
       {"obprm", "OMPL PRM with OMPL's obstacle-based sampler", false, true, false},

@@ -37,9 +37,10 @@ namespace {
 constexpr const char* kSampler = "rrtconnect";
 /// How the sampler runs (`--planner rrtconnect` with these reproduces its paths): motions
 /// certified by clearance as it adds them, where OMPL checks poses at its resolution (in open
-/// clutter a few clearances cover a motion; 1.7x faster on seeds 1-10, 1.02x slower on the
-/// bends), and uniform samples redrawn until free, so that the trees grow only towards free
-/// space (the bends, whose corridor fills a fifth of the box: 1.7x faster).
+/// clutter a few clearances cover a motion: 1.7x faster on seeds 1-10; 1.02x slower on the
+/// bends), and each robot's uniform samples redrawn until it is clear of the obstacles, so
+/// that the trees grow towards free space (bends, whose corridor fills a fifth of the box, and
+/// discs round a block: about 2-3x faster).
 const std::map<std::string, double> kSamplerParams{{"certified-motions", 1}, {"free-samples", 1}};
 /// How long the sampler runs alone before MMS starts: what MMS gives up on narrow scenes,
 /// against the cost of a second thread and of MMS's stopping (it checks the limit between

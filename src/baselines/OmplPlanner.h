@@ -25,8 +25,8 @@ struct OmplSettings {
   /// Motions checked by mms's continuous certifier (clearance against the motion's
   /// displacement bound) instead of OMPL's discrete checks at `resolution`.
   bool certifiedMotions = false;
-  /// Uniform samples redrawn until collision-free (up to 100 draws): the tree planners grow
-  /// towards free space only.
+  /// Each robot's uniform samples redrawn until it is clear of the obstacles (up to 100 draws):
+  /// the tree planners grow towards free space.
   bool freeSamples = false;
   /// Leave OMPL's planner and states allocated (a command-line run about to exit): freeing
   /// a million states would overrun the time limit by seconds.

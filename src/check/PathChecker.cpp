@@ -264,6 +264,7 @@ class MotionTest {
       const double dp = std::hypot(b[3 * i] - a[3 * i], b[3 * i + 1] - a[3 * i + 1]);
       rate[i] = dp + checker.radius(i) * std::fabs(b[3 * i + 2] - a[3 * i + 2]);
       maxRate_ = std::max(maxRate_, rate[i]);
+      if (rate[i] > 0) minRate_ = std::min(minRate_, rate[i]);
       length += rate[i];
     }
     rate_ = rate.data();
@@ -277,6 +278,9 @@ class MotionTest {
   /// Collision: a robot hits something at the piece's middle. Refused: the piece is as short as
   /// the tolerance allows and still not certified, or the evaluations ran out.
   enum class Status { Collision, Refused, Uncertified, Certified };
+  /// Over a piece [mid - half, mid + half] certified with half * minRate() at least d, every
+  /// moving robot keeps a clearance above d at mid.
+  double minRate() const { return minRate_; }
   /// Robots that stay put, at s = 0 (free of contact).
   bool stillOnesFree() const { return evaluate(0.0, 0.0, false) != Status::Collision; }
   /// The moving robots over [mid - half, mid + half].
@@ -323,7 +327,7 @@ class MotionTest {
   const Config &a_, &b_;
   size_t k_;
   const double* rate_ = nullptr;
-  double maxRate_ = 0;
+  double maxRate_ = 0, minRate_ = kInf;
   size_t budget_ = 0, evaluations_ = 0;
 };
 
@@ -355,28 +359,32 @@ double certifiedPrefix(const CollisionChecker& checker, const Config& a, const C
   MotionTest test(checker, a, b);
   if (!test.stillOnesFree()) return 0;
   // Depth first, left to right: the certified pieces join up from 0. After a collision only
-  // what lies before it is searched further.
+  // what lies before it is searched further. Where the certified beginning ends a robot may
+  // all but touch something, and a motion from there could not be certified again (pieces
+  // would need to be shorter than the tolerance): the answer is the middle of the last
+  // certified piece at which every moving robot keeps the tolerance's clearance.
   thread_local std::vector<Piece> stack;
   stack.assign(1, {0.0, 1.0});
-  double collision = 2, certified = 0;
+  double collision = 2, clear = 0;
   while (!stack.empty()) {
     const Piece p = stack.back();
     stack.pop_back();
     if (p.s0 >= collision) continue;
     const double half = 0.5 * (p.s1 - p.s0), mid = p.s0 + half;
     const MotionTest::Status st = test.piece(mid, half);
-    if (st == MotionTest::Status::Refused) return certified;
+    if (st == MotionTest::Status::Refused) return clear;
     if (st == MotionTest::Status::Certified) {
-      certified = p.s1;
+      if (p.s1 == 1) return 1;
+      if (half * test.minRate() >= checker.tolerance()) clear = mid;
     } else if (st == MotionTest::Status::Collision) {
       collision = mid;
       stack.push_back({p.s0, mid});
-    } else if (st == MotionTest::Status::Uncertified) {
+    } else {
       stack.push_back({mid, p.s1});
       stack.push_back({p.s0, mid});
     }
   }
-  return certified;
+  return clear;
 }
 
 }  // namespace mms

@@ -38,8 +38,9 @@ PathCheckResult checkMotion(const Scene& scene, const CollisionChecker& checker,
 bool motionFree(const CollisionChecker& checker, const Config& a, const Config& b);
 
 /// How far the straight motion from a to b is certified free, as a fraction of it: 1 when all
-/// of it is, else the end of its longest certified beginning that the certifier's pieces find
-/// (0 when a robot that stays put touches something).
+/// of it is; else a point of its certified beginning, as far as the certifier's pieces find,
+/// at which every moving robot is at least the contact tolerance away from anything (so that
+/// a motion from there can be certified too); 0 when there is none.
 double certifiedPrefix(const CollisionChecker& checker, const Config& a, const Config& b);
 
 }  // namespace mms
