@@ -31,6 +31,7 @@ namespace ob = ompl::base;
 namespace og = ompl::geometric;
 
 namespace {
+
 // State <-> configuration: robot i is component i (SE(2), or R^2 keeping its start angle).
 struct Layout {
   const Scene& scene;

@@ -246,9 +246,6 @@ PathCheckResult checkMotion(const Scene& scene, const CollisionChecker& checker,
   return r;
 }
 
-}  // namespace mms
-
-namespace mms {
 namespace {
 
 /// One straight motion tested piece by piece as the certifier does, without its report: what
