@@ -44,13 +44,19 @@ struct Layout {
     const auto* r = c->as<ob::SE2StateSpace::StateType>(i);
     return {r->getX(), r->getY(), r->getYaw()};
   }
-  void toConfig(const ob::State* s, Config& q) const {
+  /// With `from`: each angle within pi of from's, the way OMPL interpolates SO(2) (the short
+  /// way), so that the straight motion from `from` to q in mms's terms is OMPL's.
+  void toConfig(const ob::State* s, Config& q, const Config* from = nullptr) const {
     q.resize(scene.dof());
     for (size_t i = 0; i < scene.robots.size(); ++i) {
       const Pose p = pose(s, i);
       q[3 * i] = p.x;
       q[3 * i + 1] = p.y;
       q[3 * i + 2] = p.theta;
+      if (from) {
+        const double prev = (*from)[3 * i + 2];
+        q[3 * i + 2] = prev + std::remainder(p.theta - prev, 2 * M_PI);
+      }
     }
   }
   void fromConfig(const Config& q, ob::State* s) const {
@@ -114,9 +120,7 @@ class CertifiedMotions : public ob::MotionValidator {
   /// The motion's ends, angles turning the short way as OMPL interpolates SO(2).
   void load(const ob::State* s1, const ob::State* s2) const {
     layout_.toConfig(s1, a_);
-    layout_.toConfig(s2, b_);
-    for (size_t i = 0; i + 2 < b_.size(); i += 3)
-      b_[i + 2] = a_[i + 2] + std::remainder(b_[i + 2] - a_[i + 2], 2 * M_PI);
+    layout_.toConfig(s2, b_, &a_);
   }
   bool counted(bool ok) const {
     (ok ? valid_ : invalid_)++;
@@ -348,12 +352,7 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
     std::vector<Config> w;
     Config q;
     for (size_t k = 0; k < path.getStateCount(); ++k) {
-      layout.toConfig(path.getState(k), q);
-      if (!w.empty())
-        for (size_t i = 0; i < scene.robots.size(); ++i) {
-          const double prev = w.back()[3 * i + 2];
-          q[3 * i + 2] = prev + std::remainder(q[3 * i + 2] - prev, 2 * M_PI);
-        }
+      layout.toConfig(path.getState(k), q, w.empty() ? nullptr : &w.back());
       w.push_back(q);
     }
     return w;
