@@ -137,6 +137,21 @@ TEST(Portfolio, TheSamplersPathsAreCertifiedAsTheyGrow) {
   }
 }
 
+// A picture of the roadmap is of MMS's cells and lines. On a bend the sampler usually wins the
+// race, and its path has neither: with the picture asked for, MMS runs alone, and says so.
+TEST(Portfolio, ARoadmapPictureIsMmsAlone) {
+  test::TempDir dir;
+  const std::string scene = dir.path("bend.json"), svg = dir.path("bend.svg"),
+                    path = dir.path("bend.path.json");
+  ASSERT_EQ(runMms("scenario bend --seed 1 -o " + quote(scene)).code, 0);
+  const test::Outcome r = runMms("plan " + quote(scene) + " -q --svg-roadmap --save-roadmap -o " +
+                                 quote(path) + " --svg " + quote(svg));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("auto (mms) found a path"), std::string::npos) << r.out;
+  EXPECT_EQ(readJson(path)["statistics"]["solved_by"], "mms");
+  EXPECT_NE(test::readFile(svg).find("id=\"cells\""), std::string::npos);
+}
+
 // Where the sampler wins after MMS has started, solve() returns without waiting for MMS to
 // stop. Nothing of the caller's may be used after that: the cancel flag is freed as soon as
 // solve() returns (AddressSanitizer reports a later read), and progress reports after the

@@ -179,10 +179,10 @@ int main(int argc, char** argv) {
                       "Write a JSON summary of the run (status, times, sizes) here");
   planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
                     "In the SVG, also draw the lines' points and the free-space cells of the "
-                    "slices the path uses");
+                    "slices the path uses (auto then runs MMS alone)");
   planCmd->add_flag("--save-roadmap", pa.saveRoadmap,
                     "One robot: keep the free-space cells the path uses and the lines' points in "
-                    "the path file, for mms view");
+                    "the path file, for mms view (auto then runs MMS alone)");
   planCmd->add_option(
       "--queries", pa.queries,
       "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "

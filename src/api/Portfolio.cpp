@@ -286,11 +286,16 @@ class Portfolio : public Planner {
   Portfolio(const Scene& scene, Challenger::Maker makeMms, const PlannerParams& params)
       : scene_(scene),
         makeMms_(std::move(makeMms)),
-        samplerParams_{params.seed, kSamplerParams, false, params.exitsAfterRun} {}
+        samplerParams_{params.seed, kSamplerParams, false, params.exitsAfterRun},
+        mmsAlone_(makeMms_ && params.roadmapPicture) {}
   ~Portfolio() override { finishBackgroundWork(); }
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
     finishBackgroundWork();  // the last race's MMS, which this one may use again
+    if (mmsAlone_) {
+      if (!mms_) mms_ = makeMms_();
+      return named(mms_->solve(stop, progress), "mms");
+    }
     const std::unique_ptr<Planner> sampler = makePlanner(kSampler, scene_, samplerParams_);
     if (!makeMms_) return named(sampler->solve(stop, progress), kSampler);
     // The sampler on this thread, where the memory is warm; MMS joins it after the head start.
@@ -350,6 +355,9 @@ class Portfolio : public Planner {
   Challenger::Maker makeMms_;
   std::unique_ptr<Planner> mms_;
   PlannerParams samplerParams_;
+  /// A picture of the roadmap asks for MMS's cells and lines, which a sampler's win would not
+  /// have: MMS runs alone.
+  bool mmsAlone_;
   std::unique_ptr<Challenger> running_;  // a lost race's MMS, stopping; declared last: it uses mms_
 };
 
@@ -362,7 +370,8 @@ PlannerInfo portfolioPlannerInfo() {
   info.summary = std::string("MMS and OMPL's ") + kSampler +
                  " (certified motions, free samples) race on two cores; the first certified path "
                  "wins (the statistics name it). "
-                 "Scenes MMS does not take go to the sampler alone";
+                 "Scenes MMS does not take go to the sampler alone; with a roadmap picture asked "
+                 "for, MMS runs alone";
   info.params = mms.params;
   info.multiQuery = true;
   info.make = [make = mms.make](const Scene& scene, const PlannerParams& params,
