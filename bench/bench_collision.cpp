@@ -1,13 +1,15 @@
-// Cost of the collision checker the baselines plan with, and of the clearance query the path
-// checker uses. Scene: the reference, a 10-vertex non-convex robot among 20
-// non-convex obstacles of 8 vertices.
+// Cost of the collision checker the baselines plan with, of the clearance query the path
+// checker uses, and of the two straight-motion tests built on it: the certifier's (with its
+// report) and the one a sampler asks of every motion it adds. Scene: a 10-vertex non-convex
+// robot among 20 non-convex obstacles of 8 vertices.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 
+#include "check/PathChecker.h"
 #include "geometry/CollisionChecker.h"
-#include "scenarios/Generators.h"
 #include "io/SceneIO.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 
@@ -16,6 +18,9 @@ namespace {
 struct Fixture {
   Scene scene;
   std::vector<Pose> poses;
+  /// Short motions from each pose, a twentieth of the box and up to half a turn: the size of
+  /// a sampler's extensions.
+  std::vector<Config> from, to;
   Fixture() {
     RandomPolygonsSettings st;
     st.seed = 7;
@@ -25,6 +30,12 @@ struct Fixture {
     for (int i = 0; i < 4096; ++i)
       poses.push_back(
           {rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax), rng.uniform(-M_PI, M_PI)});
+    const double step = 0.05 * std::max(b.xmax - b.xmin, b.ymax - b.ymin);
+    for (const Pose& p : poses) {
+      from.push_back({p.x, p.y, p.theta});
+      to.push_back({p.x + rng.uniform(-step, step), p.y + rng.uniform(-step, step),
+                    p.theta + rng.uniform(-M_PI / 2, M_PI / 2)});
+    }
   }
 };
 
@@ -52,5 +63,32 @@ void BM_RobotClearance(benchmark::State& state) {
     benchmark::DoNotOptimize(checker.robotClearance(0, f.poses[i++ & 4095]).distance);
 }
 BENCHMARK(BM_RobotClearance);
+
+void BM_MotionFree(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const CollisionChecker checker(f.scene);
+  size_t i = 0, free = 0;
+  for (auto _ : state) {
+    free += motionFree(checker, f.from[i & 4095], f.to[i & 4095]);
+    ++i;
+  }
+  state.counters["free_fraction"] = double(free) / double(state.iterations());
+}
+BENCHMARK(BM_MotionFree);
+
+void BM_CheckMotion(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const CollisionChecker checker(f.scene);
+  size_t i = 0, free = 0;
+  std::vector<Config> segment(2);
+  for (auto _ : state) {
+    segment[0] = f.from[i & 4095];
+    segment[1] = f.to[i & 4095];
+    free += checkMotion(f.scene, checker, segment).ok;
+    ++i;
+  }
+  state.counters["free_fraction"] = double(free) / double(state.iterations());
+}
+BENCHMARK(BM_CheckMotion);
 
 }  // namespace

@@ -28,29 +28,93 @@ bool samePose(const Pose& a, const Pose& b, double posTol, double angTol) {
          std::fabs(std::remainder(a.theta - b.theta, 2 * M_PI)) <= angTol;
 }
 
+/// One straight motion from a to b as the certifier sees it: how far any point of each robot can
+/// move per unit of the parameter s (|dp| + radius * |dtheta|), the poses along it, and the
+/// evaluation at a piece's middle. The path certifier and a sampler's motion test share it and
+/// differ only in what they do with each distance.
+class StraightMotion {
+ public:
+  /// Kept between motions: no allocation once the robots' count has been seen.
+  void reset(const CollisionChecker& checker, const Config& a, const Config& b) {
+    checker_ = &checker;
+    a_ = &a;
+    b_ = &b;
+    k_ = checker.robotCount();
+    rate_.assign(k_, 0.0);
+    translation_ = rotation_ = maxRate_ = 0;
+    minRate_ = kInf;
+    for (size_t i = 0; i < k_; ++i) {
+      const double dp = std::hypot(b[3 * i] - a[3 * i], b[3 * i + 1] - a[3 * i + 1]);
+      const double dt = std::fabs(b[3 * i + 2] - a[3 * i + 2]);
+      translation_ += dp;
+      rotation_ += dt;
+      rate_[i] = dp + checker.radius(i) * dt;
+      maxRate_ = std::max(maxRate_, rate_[i]);
+      if (rate_[i] > 0) minRate_ = std::min(minRate_, rate_[i]);
+    }
+  }
+  double translation() const { return translation_; }
+  double rotation() const { return rotation_; }
+  double maxRate() const { return maxRate_; }
+  /// Over a piece [mid - half, mid + half] certified with half * minRate() at least d, every
+  /// moving robot keeps a clearance above d at mid.
+  double minRate() const { return minRate_; }
+  /// The summed rates: a bound on how far all points move over the whole motion.
+  double length() const {
+    double l = 0;
+    for (double v : rate_) l += v;
+    return l;
+  }
+
+  /// At parameter s, each robot's clearance and each pair's distance that matters over
+  /// [s - half, s + half] (the moving robots, or those that stay put), against the bound half *
+  /// their rates: `visit(distance, bound, robot, other)` for each, until it returns false.
+  /// `cutoff(bound)` is the distance past which an exact one changes nothing to the caller.
+  template <class Cutoff, class Visit>
+  void evaluate(double s, double half, bool movingOnly, const Cutoff& cutoff,
+                const Visit& visit) const {
+    const CollisionChecker& checker = *checker_;
+    for (size_t i = 0; i < k_; ++i) {
+      if (movingOnly != (rate_[i] > 0)) continue;
+      const double bound = half * rate_[i];
+      const auto c = checker.robotClearance(i, pose(i, s), cutoff(bound));
+      if (!visit(c.distance, bound, i, c.nearest)) return;
+    }
+    for (size_t i = 0; i < k_; ++i)
+      for (size_t j = i + 1; j < k_; ++j) {
+        if (movingOnly != (rate_[i] > 0 || rate_[j] > 0)) continue;
+        const double bound = half * (rate_[i] + rate_[j]);
+        const double d = checker.robotsDistance(i, pose(i, s), j, pose(j, s), cutoff(bound));
+        if (!visit(d, bound, i, Contact{Contact::Kind::Robot, j})) return;
+      }
+  }
+
+ private:
+  Pose pose(size_t i, double s) const {
+    const Config &a = *a_, &b = *b_;
+    auto lerp = [&](size_t c) { return a[c] + s * (b[c] - a[c]); };
+    return {lerp(3 * i), lerp(3 * i + 1), lerp(3 * i + 2)};
+  }
+
+  const CollisionChecker* checker_ = nullptr;
+  const Config *a_ = nullptr, *b_ = nullptr;
+  size_t k_ = 0;
+  std::vector<double> rate_;
+  double translation_ = 0, rotation_ = 0, maxRate_ = 0, minRate_ = kInf;
+};
+
 class Certifier {
  public:
   Certifier(const Scene& scene, const CollisionChecker& checker, const PathCheckSettings& settings,
             PathCheckResult& result)
-      : scene_(scene),
-        checker_(checker),
-        settings_(settings),
-        r_(result),
-        k_(scene.robots.size()) {}
+      : scene_(scene), checker_(checker), settings_(settings), r_(result) {}
 
   // Certifies the motion from a to b; on failure fills the result and returns false.
   bool segment(size_t index, const Config& a, const Config& b) {
     index_ = index;
-    a_ = &a;
-    b_ = &b;
-    rate_.assign(k_, 0.0);
-    for (size_t i = 0; i < k_; ++i) {
-      const double dp = std::hypot(b[3 * i] - a[3 * i], b[3 * i + 1] - a[3 * i + 1]);
-      const double dt = std::fabs(b[3 * i + 2] - a[3 * i + 2]);
-      r_.translation += dp;
-      r_.rotation += dt;
-      rate_[i] = dp + checker_.radius(i) * dt;  // bound on any point's displacement per unit s
-    }
+    motion_.reset(checker_, a, b);
+    r_.translation += motion_.translation();
+    r_.rotation += motion_.rotation();
     // Robots that stay put are checked once; pieces then only test the moving ones.
     if (evaluate(0.0, /*movingOnly=*/false, 0.0) == Status::Collision)
       return fail(0.0, budgetExceeded_ ? budgetWhy_ : why());
@@ -75,7 +139,7 @@ class Certifier {
         stack.push_back({p.s0, mid});
         continue;
       }
-      if (half * maxRate() < 0.25 * checker_.tolerance()) {
+      if (half * motion_.maxRate() < 0.25 * checker_.tolerance()) {
         failAt = mid;
         failWhy =
             why() + " (clearance below the contact tolerance " + num(checker_.tolerance()) + ")";
@@ -89,18 +153,6 @@ class Certifier {
   }
 
  private:
-  double maxRate() const {
-    double m = 0;
-    for (double v : rate_) m = std::max(m, v);
-    return m;
-  }
-
-  Pose interpolated(size_t robot, double s) const {
-    const Config &a = *a_, &b = *b_;
-    auto lerp = [&](size_t c) { return a[c] + s * (b[c] - a[c]); };
-    return {lerp(3 * robot), lerp(3 * robot + 1), lerp(3 * robot + 2)};
-  }
-
   bool fail(double s, const std::string& why) {
     r_.ok = false;
     r_.segment = index_;
@@ -125,11 +177,13 @@ class Certifier {
     Status st = Status::Certified;
     // What is hit is recorded, not described: most evaluations are certified or subdivided,
     // and a message per evaluation cost more than the clearance (the text is made on failure).
+    // Every distance is seen: the report's smallest clearance is over all of them.
     auto note = [&](double distance, double bound, size_t robot, const Contact& other) {
       r_.minClearance = std::min(r_.minClearance, std::max(0.0, distance - checker_.tolerance()));
-      if (st == Status::Collision || distance > bound) return;
+      if (st == Status::Collision || distance > bound) return true;
       st = distance <= 0 ? Status::Collision : Status::Uncertified;
       hit_ = {robot, other};
+      return true;
     };
     // Beyond both the displacement bound and the smallest clearance so far, the exact distance
     // changes nothing: a distance just past them stands in for it, and far obstacles and
@@ -137,20 +191,7 @@ class Certifier {
     auto enough = [&](double bound) {
       return std::nextafter(std::max(bound, r_.minClearance + checker_.tolerance()), kInf);
     };
-    for (size_t i = 0; i < k_; ++i) {
-      if (movingOnly != (rate_[i] > 0)) continue;
-      const double bound = half * rate_[i];
-      const auto c = checker_.robotClearance(i, interpolated(i, s), enough(bound));
-      note(c.distance, bound, i, c.nearest);
-    }
-    for (size_t i = 0; i < k_; ++i)
-      for (size_t j = i + 1; j < k_; ++j) {
-        if (movingOnly != (rate_[i] > 0 || rate_[j] > 0)) continue;
-        const double bound = half * (rate_[i] + rate_[j]);
-        const double d =
-            checker_.robotsDistance(i, interpolated(i, s), j, interpolated(j, s), enough(bound));
-        note(d, bound, i, Contact{Contact::Kind::Robot, j});
-      }
+    motion_.evaluate(s, half, movingOnly, enough, note);
     return st;
   }
 
@@ -163,10 +204,8 @@ class Certifier {
   const CollisionChecker& checker_;
   const PathCheckSettings& settings_;
   PathCheckResult& r_;
-  size_t k_;
   size_t index_ = 0;
-  const Config *a_ = nullptr, *b_ = nullptr;
-  std::vector<double> rate_;
+  StraightMotion motion_;
   std::vector<Piece> stack_;
   bool budgetExceeded_ = false;
   std::string budgetWhy_;
@@ -253,21 +292,11 @@ namespace {
 class MotionTest {
  public:
   MotionTest(const CollisionChecker& checker, const Config& a, const Config& b)
-      : checker_(checker), a_(a), b_(b), k_(checker.robotCount()) {
-    thread_local std::vector<double> rate;
-    rate.assign(k_, 0.0);
-    double length = 0;
-    for (size_t i = 0; i < k_; ++i) {
-      const double dp = std::hypot(b[3 * i] - a[3 * i], b[3 * i + 1] - a[3 * i + 1]);
-      rate[i] = dp + checker.radius(i) * std::fabs(b[3 * i + 2] - a[3 * i + 2]);
-      maxRate_ = std::max(maxRate_, rate[i]);
-      if (rate[i] > 0) minRate_ = std::min(minRate_, rate[i]);
-      length += rate[i];
-    }
-    rate_ = rate.data();
+      : checker_(checker), motion_(reused()) {
+    motion_.reset(checker, a, b);
     // A motion that grazes a contact would need pieces as short as the tolerance: it is
     // refused after about as many evaluations as pieces a quarter of the tolerance long.
-    budget_ = 1000 + size_t(std::min(1e6, 4 * length / checker.tolerance()));
+    budget_ = 1000 + size_t(std::min(1e6, 4 * motion_.length() / checker.tolerance()));
   }
   MotionTest(const MotionTest&) = delete;
   MotionTest& operator=(const MotionTest&) = delete;
@@ -275,56 +304,42 @@ class MotionTest {
   /// Collision: a robot hits something at the piece's middle. Refused: the piece is as short as
   /// the tolerance allows and still not certified, or the evaluations ran out.
   enum class Status { Collision, Refused, Uncertified, Certified };
-  /// Over a piece [mid - half, mid + half] certified with half * minRate() at least d, every
-  /// moving robot keeps a clearance above d at mid.
-  double minRate() const { return minRate_; }
+  double minRate() const { return motion_.minRate(); }
   /// Robots that stay put, at s = 0 (free of contact).
   bool stillOnesFree() const { return evaluate(0.0, 0.0, false) != Status::Collision; }
   /// The moving robots over [mid - half, mid + half].
   Status piece(double mid, double half) {
     if (++evaluations_ > budget_) return Status::Refused;
     const Status st = evaluate(mid, half, true);
-    if (st == Status::Uncertified && half * maxRate_ < 0.25 * checker_.tolerance())
+    if (st == Status::Uncertified && half * motion_.maxRate() < 0.25 * checker_.tolerance())
       return Status::Refused;
     return st;
   }
 
  private:
-  Pose pose(size_t i, double s) const {
-    auto lerp = [&](size_t c) { return a_[c] + s * (b_[c] - a_[c]); };
-    return {lerp(3 * i), lerp(3 * i + 1), lerp(3 * i + 2)};
+  /// One per thread, reset per motion: a sampler tests thousands of motions a second.
+  static StraightMotion& reused() {
+    thread_local StraightMotion motion;
+    return motion;
   }
+  /// Stops at the first contact; only whether a distance is within its bound matters.
   Status evaluate(double s, double half, bool movingOnly) const {
     Status st = Status::Certified;
-    auto note = [&](double distance, double bound) {
-      if (distance <= 0) return false;
-      if (distance <= bound) st = Status::Uncertified;
-      return true;
-    };
-    for (size_t i = 0; i < k_; ++i) {
-      if (movingOnly != (rate_[i] > 0)) continue;
-      const double bound = half * rate_[i];
-      if (!note(checker_.robotClearance(i, pose(i, s), std::nextafter(bound, kInf)).distance,
-                bound))
-        return Status::Collision;
-    }
-    for (size_t i = 0; i < k_; ++i)
-      for (size_t j = i + 1; j < k_; ++j) {
-        if (movingOnly != (rate_[i] > 0 || rate_[j] > 0)) continue;
-        const double bound = half * (rate_[i] + rate_[j]);
-        if (!note(
-                checker_.robotsDistance(i, pose(i, s), j, pose(j, s), std::nextafter(bound, kInf)),
-                bound))
-          return Status::Collision;
-      }
+    auto justPast = [](double bound) { return std::nextafter(bound, kInf); };
+    motion_.evaluate(s, half, movingOnly, justPast,
+                     [&](double distance, double bound, size_t, const Contact&) {
+                       if (distance <= 0) {
+                         st = Status::Collision;
+                         return false;
+                       }
+                       if (distance <= bound) st = Status::Uncertified;
+                       return true;
+                     });
     return st;
   }
 
   const CollisionChecker& checker_;
-  const Config &a_, &b_;
-  size_t k_;
-  const double* rate_ = nullptr;
-  double maxRate_ = 0, minRate_ = kInf;
+  StraightMotion& motion_;
   size_t budget_ = 0, evaluations_ = 0;
 };
 
