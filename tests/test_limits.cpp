@@ -22,6 +22,10 @@ namespace mms {
 namespace {
 
 Scene crowded(int robots) { return randomScene({3, robots, 1000}); }
+/// For tests that also build a whole slice: one among a thousand obstacles takes about 1 s,
+/// and 40-60 s under the sanitizers, where a third of them still takes far longer than the
+/// short limits the tests set.
+int obstaclesForWholeSlices() { return test::kSanitized ? 300 : 1000; }
 
 // The default planner on the zigzag slot (a bar outside a room whose one way in bends too
 // tightly for it: no solution, and none that a planner can prove) for 60 s under a memory limit,
@@ -33,8 +37,8 @@ test::Outcome planZigzagSlot(int memoryLimitMb, const std::string& out) {
 }
 
 TEST(Limits, SliceConstructionStopsAtTheScopesLimit) {
-  const Scene scene = crowded(1);
-  ASSERT_EQ(scene.obstacles.size(), 1000u);
+  const Scene scene = randomScene({3, 1, obstaclesForWholeSlices()});
+  ASSERT_EQ(scene.obstacles.size(), size_t(obstaclesForWholeSlices()));
   const SliceWorld world(scene, 0);
   const auto angle = exact::rationalAngleNear(0.3, 30);
   {
@@ -89,16 +93,15 @@ TEST(Limits, WhatALimitCutIsFreedWhenTheNextRunStarts) {
 }
 
 TEST(Limits, OneRobotPlannerEndsWhenTheLimitStrikesInsideASlice) {
-  const Scene scene = crowded(1);
+  const Scene scene = randomScene({3, 1, obstaclesForWholeSlices()});
   MmsPlanner planner(scene, 0, {});
   const MmsResult r =
       planner.solve(scene.robots[0].start, scene.robots[0].goal, Termination(0.001));
   EXPECT_EQ(r.status, PlanStatus::NotFound);
   EXPECT_EQ(planner.slices().size(), 0u);  // the slice under way was dropped
   EXPECT_EQ(StopScope::current(), nullptr);
-  // The planner stays usable: a second query with time builds slices. One slice among a
-  // thousand obstacles takes about 1 s here and 40-60 s under the sanitizers (more than the
-  // usual tenfold margin), so the sanitized budget is set apart.
+  // The planner stays usable: a second query with time builds slices. The sanitizers slow
+  // slices more than the usual tenfold margin, so their budget is set apart.
   const MmsResult again = planner.solve(scene.robots[0].start, scene.robots[0].goal,
                                         Termination(test::kSanitized ? 300 : 5));
   EXPECT_GT(planner.slices().size(), 0u);
