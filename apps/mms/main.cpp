@@ -179,7 +179,7 @@ int main(int argc, char** argv) {
                       "Write a JSON summary of the run (status, times, sizes) here");
   planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
                     "In the SVG, also draw the lines' points and the free-space cells of the "
-                    "slices the path uses (auto then runs MMS alone)");
+                    "slices the path uses (one robot: auto then runs MMS alone)");
   planCmd->add_flag("--save-roadmap", pa.saveRoadmap,
                     "One robot: keep the free-space cells the path uses and the lines' points in "
                     "the path file, for mms view (auto then runs MMS alone)");

@@ -287,7 +287,7 @@ class Portfolio : public Planner {
       : scene_(scene),
         makeMms_(std::move(makeMms)),
         samplerParams_{params.seed, kSamplerParams, false, params.exitsAfterRun},
-        mmsAlone_(makeMms_ && params.roadmapPicture) {}
+        mmsAlone_(makeMms_ && params.roadmapPicture && scene.robots.size() == 1) {}
   ~Portfolio() override { finishBackgroundWork(); }
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
@@ -355,8 +355,8 @@ class Portfolio : public Planner {
   Challenger::Maker makeMms_;
   std::unique_ptr<Planner> mms_;
   PlannerParams samplerParams_;
-  /// A picture of the roadmap asks for MMS's cells and lines, which a sampler's win would not
-  /// have: MMS runs alone.
+  /// A picture of the roadmap asks for MMS's cells and lines (one robot), which a sampler's win
+  /// would not have: MMS runs alone.
   bool mmsAlone_;
   std::unique_ptr<Challenger> running_;  // a lost race's MMS, stopping; declared last: it uses mms_
 };
@@ -371,7 +371,7 @@ PlannerInfo portfolioPlannerInfo() {
                  " (certified motions, free samples) race on two cores; the first certified path "
                  "wins (the statistics name it). "
                  "Scenes MMS does not take go to the sampler alone; with a roadmap picture asked "
-                 "for, MMS runs alone";
+                 "for (one robot), MMS runs alone";
   info.params = mms.params;
   info.multiQuery = true;
   info.make = [make = mms.make](const Scene& scene, const PlannerParams& params,
