@@ -21,7 +21,7 @@
 namespace mms {
 namespace {
 
-Scene crowded(int robots) { return randomScene({3, robots, 1000}); }
+Scene crowded(int robots, int obstacles = 1000) { return randomScene({3, robots, obstacles}); }
 /// For tests that also build a whole slice: one among a thousand obstacles takes about 1 s,
 /// and 40-60 s under the sanitizers, where a third of them still takes far longer than the
 /// short limits the tests set.
@@ -37,7 +37,7 @@ test::Outcome planZigzagSlot(int memoryLimitMb, const std::string& out) {
 }
 
 TEST(Limits, SliceConstructionStopsAtTheScopesLimit) {
-  const Scene scene = randomScene({3, 1, obstaclesForWholeSlices()});
+  const Scene scene = crowded(1, obstaclesForWholeSlices());
   ASSERT_EQ(scene.obstacles.size(), size_t(obstaclesForWholeSlices()));
   const SliceWorld world(scene, 0);
   const auto angle = exact::rationalAngleNear(0.3, 30);
@@ -93,7 +93,7 @@ TEST(Limits, WhatALimitCutIsFreedWhenTheNextRunStarts) {
 }
 
 TEST(Limits, OneRobotPlannerEndsWhenTheLimitStrikesInsideASlice) {
-  const Scene scene = randomScene({3, 1, obstaclesForWholeSlices()});
+  const Scene scene = crowded(1, obstaclesForWholeSlices());
   MmsPlanner planner(scene, 0, {});
   const MmsResult r =
       planner.solve(scene.robots[0].start, scene.robots[0].goal, Termination(0.001));
