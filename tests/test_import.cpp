@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include "Support.h"
@@ -308,6 +309,93 @@ TEST(Import, OmplPathExportHasOneStatePerLine) {
                     quote(test::scenario("two-robots/niche-swap.path.json")) +
                     " --to ompl-path -o " + quote(dir.path("x.path")));
   EXPECT_EQ(two.code, 2) << "one rigid robot only";
+}
+
+// OMPL turns the short way between states and keeps angles in [-pi, pi): an exported path
+// must say the same motion there. Random paths with turns of up to three full circles.
+TEST(Import, OmplPathExportDescribesTheSameMotion) {
+  Scene s;
+  s.bounds = {-10, -10, 10, 10};
+  s.robots.push_back({"r", test::rect(-0.5, -0.1, 0.5, 0.1), {0, 0, 0}, {0, 0, 0}, Motion::Rigid});
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> at(-9, 9), turn(-6 * M_PI, 6 * M_PI);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<Config> w(2 + rng() % 6, Config(3));
+    double theta = turn(rng);
+    for (Config& q : w) {
+      q = {at(rng), at(rng), theta};
+      theta += trial % 4 == 0 ? std::round(turn(rng) / M_PI) * M_PI : turn(rng);  // exact pi too
+    }
+    const std::string text = omplPathText(w);
+    const std::vector<Config> back = parseOmplPath(text, "p.path", s);
+    const std::vector<Config> split = splitLongTurns(w);
+    ASSERT_EQ(back.size(), split.size()) << text;
+    // The same waypoints, every angle moved by one whole number of turns: the same motion.
+    const double offset = back[0][2] - split[0][2];
+    EXPECT_NEAR(std::remainder(offset, 2 * M_PI), 0, 1e-9);
+    for (size_t k = 0; k < back.size(); ++k) {
+      EXPECT_NEAR(back[k][0], split[k][0], 1e-9);
+      EXPECT_NEAR(back[k][1], split[k][1], 1e-9);
+      EXPECT_NEAR(back[k][2] - split[k][2], offset, 1e-9) << "state " << k << " of\n" << text;
+    }
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+      std::istringstream l(line);
+      double x, y, theta;
+      ASSERT_TRUE(l >> x >> y >> theta) << line;
+      EXPECT_TRUE(theta >= -M_PI && theta < M_PI) << line;
+    }
+    // The split path is the original: every waypoint kept in order, the others on its segments.
+    size_t kept = 0;
+    for (const Config& q : split)
+      if (kept < w.size() && q == w[kept]) ++kept;
+    EXPECT_EQ(kept, w.size());
+  }
+  std::istringstream lines(omplPathText({{0, 0, 0}, {0, 0, 4}}));
+  size_t n = 0;
+  for (std::string line; std::getline(lines, line); ++n) {
+    std::istringstream l(line);
+    double x, y, theta;
+    ASSERT_TRUE(l >> x >> y >> theta);
+    EXPECT_GE(theta, -M_PI);
+    EXPECT_LT(theta, M_PI);
+  }
+  EXPECT_EQ(n, 3u) << "a turn of 4 rad in two parts";
+}
+
+// Every bundled one-robot scene with a path: exported, read back, certified again.
+TEST(Import, EveryBundledOneRobotPathSurvivesTheOmplPathRoundTrip) {
+  TempDir dir;
+  for (const std::string name : {"bar-slot", "corridor-corner", "bug-trap", "maze"}) {
+    const std::string scene = quote(test::scenario("one-robot/" + name + ".json")),
+                      json = dir.path(name + ".json"), text = dir.path(name + ".path");
+    const auto plan = runMms("plan " + scene + " --planner mms -q --time-limit " +
+                             std::to_string(test::planSeconds(30)) + " -o " + quote(json));
+    ASSERT_EQ(plan.code, 0) << name << ": " << plan.err;
+    const auto out =
+        runMms("export " + scene + " " + quote(json) + " --to ompl-path -q -o " + quote(text));
+    ASSERT_EQ(out.code, 0) << name << ": " << out.err;
+    const auto c = runMms("check " + scene + " " + quote(text));
+    EXPECT_EQ(c.code, 0) << name << ": " << c.out << c.err;
+  }
+  // A certified turn the long way (0 to 4 rad in open space) is certified after the trip too,
+  // and turns the same way: its rotation stays 4 rad.
+  const std::string open = dir.file("open.json",
+                                    R"({"format": "mms-scene/1", "bounds": [-10, -10, 10, 10],
+          "obstacles": [[[3, -1], [4, -1], [4, 1], [3, 1]]],
+          "robots": [{"name": "bar", "shape": [[-1, -0.1], [1, -0.1], [1, 0.1], [-1, 0.1]],
+                      "start": [0, 0, 0], "goal": [0, 0, 4]}]})");
+  const std::string turn = dir.file(
+      "turn.json",
+      R"({"format": "mms-path/1", "robots": ["bar"], "waypoints": [[0, 0, 0], [0, 0, 4]]})");
+  ASSERT_EQ(runMms("check " + quote(open) + " " + quote(turn)).code, 0);
+  ASSERT_EQ(runMms("export " + quote(open) + " " + quote(turn) + " --to ompl-path -q -o " +
+                   quote(dir.path("turn.path")))
+                .code,
+            0);
+  const auto c = runMms("check " + quote(open) + " " + quote(dir.path("turn.path")));
+  EXPECT_EQ(c.code, 0) << c.out << c.err;
+  EXPECT_NE(c.out.find("rotation 4 rad"), std::string::npos) << c.out;
 }
 
 // Headless Chromium screenshots of the viewer.

@@ -27,6 +27,22 @@ std::string pose(const Pose& p) {
   std::snprintf(buf, sizeof buf, "(%g, %g, %g)", p.x, p.y, p.theta);
   return buf;
 }
+// --bounds XMIN,YMIN,XMAX,YMAX.
+Box parseBounds(const std::string& text) {
+  std::vector<double> v;
+  std::istringstream in(text);
+  in.imbue(std::locale::classic());
+  for (std::string part; std::getline(in, part, ',');) {
+    const std::optional<double> x = wholeNumber(part);
+    if (!x || !std::isfinite(*x))
+      throw InputError("--bounds: '" + part + "' is not a number (expected XMIN,YMIN,XMAX,YMAX)");
+    v.push_back(*x);
+  }
+  if (v.size() != 4 || v[0] >= v[2] || v[1] >= v[3])
+    throw InputError("--bounds: '" + text +
+                     "' is not XMIN,YMIN,XMAX,YMAX with XMIN < XMAX and YMIN < YMAX");
+  return {v[0], v[1], v[2], v[3]};
+}
 }  // namespace
 
 Scene readScene(const std::string& file, bool quiet) {
@@ -112,32 +128,18 @@ int scenario(const ScenarioArgs& a) {
 
 int importScene(const ImportArgs& a) {
   checkWritable(a.output, "-o");
-  if (a.bounds.empty()) {
-    saveScene(readScene(a.input, a.quiet), a.output);
-  } else {
-    std::vector<double> v;
-    std::istringstream in(a.bounds);
-    in.imbue(std::locale::classic());
-    for (std::string part; std::getline(in, part, ',');) {
-      const std::optional<double> x = wholeNumber(part);
-      if (!x || !std::isfinite(*x))
-        throw InputError("--bounds: '" + part + "' is not a number (expected XMIN,YMIN,XMAX,YMAX)");
-      v.push_back(*x);
-    }
-    if (v.size() != 4 || v[0] >= v[2] || v[1] >= v[3])
-      throw InputError("--bounds: '" + a.bounds +
-                       "' is not XMIN,YMIN,XMAX,YMAX with XMIN < XMAX and YMIN < YMAX");
-    ImportNotes notes;
-    Scene s = loadAnyScene(a.input, notes);
-    s.bounds = {v[0], v[1], v[2], v[3]};
+  ImportNotes notes;
+  Scene s = loadAnyScene(a.input, notes);
+  if (!a.bounds.empty()) {
+    s.bounds = parseBounds(a.bounds);
     // Validated again in the new bounds: a robot or obstacle outside them is named.
     s = parseScene(sceneToJson(s), a.input + " (with --bounds " + a.bounds + ")");
-    if (!a.quiet)
-      for (const std::string& w : notes.warnings)
-        if (w.rfind("bounds:", 0) != 0) std::fprintf(stderr, "mms: note: %s\n", w.c_str());
-    saveScene(s, a.output);
   }
-  const Scene s = loadScene(a.output);
+  if (!a.quiet)
+    for (const std::string& w : notes.warnings)
+      if (a.bounds.empty() || w.rfind("bounds:", 0) != 0)
+        std::fprintf(stderr, "mms: note: %s\n", w.c_str());
+  saveScene(s, a.output);
   if (!a.quiet) {
     size_t vertices = 0;
     for (const Ring& o : s.obstacles) vertices += o.size();

@@ -156,6 +156,11 @@ int plan(const PlanArgs& a) {
                      why + ")");
   std::vector<Query> queries{{Pose{}, Pose{}}};
   if (!a.queries.empty()) queries = loadQueries(a.queries, scene);
+  if (queries.size() > 1)
+    for (const auto& [path, option] : {std::pair{a.output, "-o"}, {a.svg, "--svg"}})
+      if (path == kStandardOutput)
+        throw InputError(a.queries + ": (" + option +
+                         "): several queries write a file each, not one to standard output");
 
   PlannerParams params = a.params;
   params.seed = a.seed;

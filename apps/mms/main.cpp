@@ -11,6 +11,7 @@
 #include "mms/Errors.h"
 #include "mms/Planner.h"
 #include "mms/mms.h"
+#include "util/AtomicFile.h"
 #include "util/CommandBoundary.h"
 #include "util/Interrupt.h"
 #include "util/MemoryLimit.h"
@@ -31,14 +32,15 @@ std::string parseErrorLine(const CLI::ParseError& e) {
   return line;
 }
 
-// --memory-limit: 0 (none) or a cap large enough for the program itself to start.
+// --memory-limit: 0 (none) or a cap; one too small for the program itself ends as any other
+// run out of memory does.
 const CLI::Validator memoryLimitMb(
     [](std::string& v) -> std::string {
       double mb = -1;
       if (!CLI::detail::lexical_cast(v, mb)) return "not a number: " + v;
-      return mb == 0 || (mb >= 64 && mb <= 1e7) ? "" : "must be 0 (no limit) or 64 to 1e7 MB";
+      return mb == 0 || (mb >= 1 && mb <= 1e7) ? "" : "must be 0 (no limit) or 1 to 1e7 MB";
     },
-    "0|64..1e7");
+    "0|1..1e7");
 
 // Every planner's parameters, once per name (planners share some), with the planners that
 // take each.
@@ -88,6 +90,25 @@ CLI::Option* seedOption(CLI::App* cmd, uint64_t& v, const std::string& help) {
   return cmd->add_option("--seed", v, help)->capture_default_str()->check(wholeNumber);
 }
 
+// "-" for a file sends it to standard output and the command's report to standard error; at
+// most one file can go there, and a folder never does.
+void claimStandardOutput(const std::vector<std::pair<std::string, const char*>>& files,
+                         const std::vector<std::pair<std::string, const char*>>& folders = {}) {
+  for (const auto& [value, option] : folders)
+    if (value == mms::kStandardOutput)
+      throw mms::InputError(std::string("-: (") + option +
+                            "): a folder is needed here, not standard output");
+  const char* first = nullptr;
+  for (const auto& [value, option] : files) {
+    if (value != mms::kStandardOutput) continue;
+    if (first)
+      throw mms::InputError(std::string("-: (") + option + "): " + first +
+                            " already writes to standard output");
+    first = option;
+  }
+  if (first) mms::keepStandardOutputForData();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -124,7 +145,7 @@ int main(int argc, char** argv) {
       "render", "Draw a scene (and a path, animated) as SVG: start poses green, goal poses red");
   sceneArg(renderCmd, ra.scene, "Scene file");
   renderCmd->add_option("PATH", ra.path, "Path file to draw and animate");
-  outputOption(renderCmd, ra.output, "SVG file to write");
+  outputOption(renderCmd, ra.output, "SVG file to write (-: standard output)");
   renderCmd->add_option("--width", ra.width, "Picture width in pixels")
       ->capture_default_str()
       ->check(CLI::Range(50.0, 20000.0));
@@ -139,8 +160,10 @@ int main(int argc, char** argv) {
       "Plan a certified motion with MMS (manifold samples: fixed-angle slices, fixed-position\n"
       "lines). Exit 0 path found and certified, 1 no path within the time limit, 2 bad input");
   sceneArg(planCmd, pa.scene, "Scene file");
-  planCmd->add_option("-o,--output", pa.output, "Write the path (mms-path/1) here");
-  planCmd->add_option("--svg", pa.svg, "Write an animated SVG of the scene and path here");
+  planCmd->add_option("-o,--output", pa.output,
+                      "Write the path (mms-path/1) here (-: standard output)");
+  planCmd->add_option("--svg", pa.svg,
+                      "Write an animated SVG of the scene and path here (-: standard output)");
   seedOption(planCmd, pa.seed, "Random seed (same seed, same path)");
   planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
       ->capture_default_str()
@@ -175,8 +198,9 @@ int main(int argc, char** argv) {
     paramOptions.emplace_back(spec.name, o);
     paramSpecs[spec.name] = spec;
   }
-  planCmd->add_option("--stats-json", pa.statsJson,
-                      "Write a JSON summary of the run (status, times, sizes) here");
+  planCmd->add_option(
+      "--stats-json", pa.statsJson,
+      "Write a JSON summary of the run (status, times, sizes) here (-: standard output)");
   planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
                     "In the SVG, also draw the lines' points and the free-space cells of the "
                     "slices the path uses (one robot: auto then runs MMS alone)");
@@ -210,7 +234,7 @@ int main(int argc, char** argv) {
           "doors")
       ->required()
       ->check(CLI::IsMember(mms::scenarioNames()));
-  outputOption(scenarioCmd, sa.output, "Scene file to write");
+  outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");
   scenarioCmd
       ->add_option("--tightness", sa.tightness,
                    "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
@@ -256,7 +280,8 @@ int main(int argc, char** argv) {
       "and DIR/disassembly.json (the sequence). Exit 1 when parts remain stuck.");
   sceneArg(assembleCmd, aa.scene, "Scene file (mms-scene/1)");
   outputOption(assembleCmd, aa.output, "Directory for the files");
-  assembleCmd->add_option("--svg", aa.svg, "Write an animated SVG of the whole disassembly");
+  assembleCmd->add_option("--svg", aa.svg,
+                          "Write an animated SVG of the whole disassembly (-: standard output)");
   seedOption(assembleCmd, aa.seed, "Random seed");
   assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
       ->capture_default_str()
@@ -332,7 +357,7 @@ int main(int argc, char** argv) {
       "any browser; FILE.html#t=0.5 opens it half-way through the motion");
   sceneArg(viewCmd, wa.scene, "Scene file (any format mms reads)");
   viewCmd->add_option("PATH", wa.path, "Path file to play");
-  outputOption(viewCmd, wa.output, "HTML file to write");
+  outputOption(viewCmd, wa.output, "HTML file to write (-: standard output)");
 
   ImportArgs ia;
   auto* importCmd = app.add_subcommand(
@@ -341,7 +366,7 @@ int main(int argc, char** argv) {
       "names) or a discopygal JSON scene. Notes on stderr say what the conversion changed.\n"
       "(plan, validate, check, render and view read these files directly too)");
   importCmd->add_option("FILE", ia.input, "OMPL.app .cfg or discopygal .json")->required();
-  outputOption(importCmd, ia.output, "Scene file to write");
+  outputOption(importCmd, ia.output, "Scene file to write (-: standard output)");
   quietFlag(importCmd, ia.quiet, "Print nothing on success");
   importCmd->add_option("--bounds", ia.bounds,
                         "XMIN,YMIN,XMAX,YMAX: the workspace, instead of the one the file gives "
@@ -358,7 +383,7 @@ int main(int argc, char** argv) {
   exportCmd->add_option("--to", ea.to, "discopygal or ompl-path")
       ->required()
       ->check(CLI::IsMember({"discopygal", "ompl-path"}));
-  outputOption(exportCmd, ea.output, "File to write");
+  outputOption(exportCmd, ea.output, "File to write (-: standard output)");
   quietFlag(exportCmd, ea.quiet, "Print nothing on success");
 
   LabArgs la;
@@ -397,6 +422,18 @@ int main(int argc, char** argv) {
 
   return mms::runAtBoundary(
       [&]() -> int {
+        if (*planCmd)
+          claimStandardOutput(
+              {{pa.output, "-o"}, {pa.svg, "--svg"}, {pa.statsJson, "--stats-json"}});
+        if (*renderCmd) claimStandardOutput({{ra.output, "-o"}});
+        if (*viewCmd) claimStandardOutput({{wa.output, "-o"}});
+        if (*scenarioCmd) claimStandardOutput({{sa.output, "-o"}});
+        if (*importCmd) claimStandardOutput({{ia.output, "-o"}});
+        if (*exportCmd) claimStandardOutput({{ea.output, "-o"}});
+        if (*assembleCmd) claimStandardOutput({{aa.svg, "--svg"}}, {{aa.output, "-o"}});
+        if (*benchCmd) claimStandardOutput({}, {{ba.output, "-o"}});
+        if (*mergeCmd) claimStandardOutput({}, {{mergeOut, "-o"}});
+        if (*labCmd) claimStandardOutput({}, {{la.output, "-o"}});
         if (*validateCmd) return validate(va);
         if (*checkCmd) return check(ca);
         if (*renderCmd) return render(ra);

@@ -11,22 +11,32 @@ namespace {
 
 using Type = ParamSpec::Type;
 
+// The counts of OMPL's tree or roadmap, as every planner reports them.
+PlanStatistics statistics(const OmplResult& r) {
+  PlanStatistics s;
+  s.seconds = r.seconds;
+  s.graphNodes = r.states;
+  s.graphEdges = r.edges;
+  s.counts = {{"states", r.states}};
+  return s;
+}
+
 class OmplAdapter : public Planner {
  public:
   OmplAdapter(const Scene& scene, OmplSettings settings, std::map<std::string, double> parameters)
       : scene_(scene), settings_(std::move(settings)), parameters_(std::move(parameters)) {}
 
-  PlanResult solve(const Termination& stop, const Progress&) override {
-    const OmplResult r = planWithOmpl(scene_, settings_, stop);
+  PlanResult solve(const Termination& stop, const Progress& progress) override {
+    OmplProgress onProgress;
+    if (progress) onProgress = [&](const OmplResult& sofar) { progress(statistics(sofar)); };
+    const OmplResult r = planWithOmpl(scene_, settings_, stop, onProgress);
     PlanResult out;
     // OMPL does not tell a cancelled run from one out of time.
     out.status =
         r.status == PlanStatus::NotFound && stop.cancelled() ? PlanStatus::Cancelled : r.status;
     out.waypoints = r.waypoints;
     out.certificate = r.certificate;
-    out.stats.seconds = r.seconds;
-    out.stats.graphNodes = r.states;
-    out.stats.counts = {{"states", r.states}};
+    out.stats = statistics(r);
     out.stats.phases = {{"setup", r.setupSeconds},
                         {"solve", r.solveSeconds},
                         {"certify", r.seconds - r.setupSeconds - r.solveSeconds}};

@@ -1,6 +1,5 @@
 #include "baselines/OmplPlanner.h"
 
-#include <ompl/base/PlannerData.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/samplers/BridgeTestValidStateSampler.h>
 #include <ompl/base/samplers/GaussianValidStateSampler.h>
@@ -21,7 +20,9 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include <atomic>
 #include <cmath>
+#include <mutex>
 
 #include "baselines/UobprmSampler.h"
 
@@ -239,21 +240,69 @@ ob::StateSpacePtr makeSpace(const Scene& scene) {
   return space;
 }
 
-ob::PlannerPtr makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings& s,
-                           double extent) {
+// The size of a planner's tree or roadmap, read where the planner keeps it: OMPL's
+// PlannerData copies every state (seconds for a million), these read counts. A tree has an
+// edge per vertex but its roots.
+struct GraphSize {
+  size_t vertices = 0, edges = 0;
+};
+GraphSize tree(size_t vertices, size_t roots) {
+  return {vertices, vertices > roots ? vertices - roots : 0};
+}
+struct SizedRrt : og::RRT {
+  using og::RRT::RRT;
+  GraphSize size() const { return tree(nn_ ? nn_->size() : 0, 1); }
+};
+struct SizedRrtConnect : og::RRTConnect {
+  using og::RRTConnect::RRTConnect;
+  GraphSize size() const {
+    return tree((tStart_ ? tStart_->size() : 0) + (tGoal_ ? tGoal_->size() : 0), 2);
+  }
+};
+struct SizedRrtStar : og::RRTstar {
+  using og::RRTstar::RRTstar;
+  GraphSize size() const { return tree(nn_ ? nn_->size() : 0, 1); }
+};
+struct SizedKpiece : og::KPIECE1 {
+  using og::KPIECE1::KPIECE1;
+  GraphSize size() const { return tree(disc_.getMotionCount(), 1); }
+};
+struct SizedBkpiece : og::BKPIECE1 {
+  using og::BKPIECE1::BKPIECE1;
+  GraphSize size() const { return tree(dStart_.getMotionCount() + dGoal_.getMotionCount(), 2); }
+};
+struct SizedLazyPrm : og::LazyPRM {
+  using og::LazyPRM::LazyPRM;
+  GraphSize size() const { return {boost::num_vertices(g_), boost::num_edges(g_)}; }
+};
+
+struct MadePlanner {
+  ob::PlannerPtr planner;
+  std::function<GraphSize()> size;
+};
+
+template <class P>
+MadePlanner sized(std::shared_ptr<P> p) {
+  return {p, [q = p.get()] { return q->size(); }};
+}
+
+MadePlanner makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings& s, double extent) {
   const std::string& n = s.planner;
-  auto prm = [&] {
+  auto prm = [&]() -> MadePlanner {
     auto p = std::make_shared<og::PRM>(si);
     if (s.neighbours) p->setMaxNearestNeighbors(s.neighbours);
-    return p;
+    return {
+        p, [q = p.get()] {
+          return GraphSize{boost::num_vertices(q->getRoadmap()), boost::num_edges(q->getRoadmap())};
+        }};
   };
   auto withSampler = [&](ob::ValidStateSamplerAllocator alloc) {
     si->setValidStateSamplerAllocator(std::move(alloc));
     return prm();
   };
-  auto withRange = [&](auto p) -> ob::PlannerPtr {
+  auto withRange = [&](auto p) {
     if (s.range > 0) p->setRange(s.range);
-    return p;
+    return sized(p);
   };
   if (n == "prm") return prm();
   if (n == "obprm")
@@ -275,32 +324,28 @@ ob::PlannerPtr makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings
       return std::make_shared<UobprmSampler>(i, length, step);
     });
   }
-  if (n == "rrt") return withRange(std::make_shared<og::RRT>(si));
-  if (n == "rrtconnect") return withRange(std::make_shared<og::RRTConnect>(si));
-  if (n == "kpiece") return withRange(std::make_shared<og::KPIECE1>(si));
-  if (n == "bkpiece") return withRange(std::make_shared<og::BKPIECE1>(si));
-  if (n == "lazyprm") return withRange(std::make_shared<og::LazyPRM>(si));
-  if (n == "rrtstar") return withRange(std::make_shared<og::RRTstar>(si));
-  if (n == "bitstar") return std::make_shared<og::BITstar>(si);
+  if (n == "rrt") return withRange(std::make_shared<SizedRrt>(si));
+  if (n == "rrtconnect") return withRange(std::make_shared<SizedRrtConnect>(si));
+  if (n == "kpiece") return withRange(std::make_shared<SizedKpiece>(si));
+  if (n == "bkpiece") return withRange(std::make_shared<SizedBkpiece>(si));
+  if (n == "lazyprm") return withRange(std::make_shared<SizedLazyPrm>(si));
+  if (n == "rrtstar") return withRange(std::make_shared<SizedRrtStar>(si));
+  if (n == "bitstar") {
+    // BIT* keeps its tree's size as a progress property only.
+    auto p = std::make_shared<og::BITstar>(si);
+    return {p, [q = p.get()] {
+              const auto& props = q->getPlannerProgressProperties();
+              const auto it = props.find("current graph vertices INTEGER");
+              return tree(it == props.end() ? 0 : std::stoul(it->second()), 1);
+            }};
+  }
   throw std::invalid_argument("unknown planner '" + n + "'");
-}
-
-// Vertices of the planner's graph or tree. PRM reports its milestones cheaply; for the others
-// OMPL's PlannerData costs seconds on graphs of a million states, so it is only taken while
-// the time limit leaves room (otherwise 0: not counted).
-size_t graphSize(ob::Planner& planner, const ob::SpaceInformationPtr& si, const Termination& stop) {
-  const auto& props = planner.getPlannerProgressProperties();
-  if (auto it = props.find("milestone count INTEGER"); it != props.end())
-    return std::stoul(it->second());
-  if (stop()) return 0;
-  ob::PlannerData data(si);
-  planner.getPlannerData(data);
-  return data.numVertices();
 }
 
 }  // namespace
 
-OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop) {
+OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop,
+                        const OmplProgress& progress) {
   // The time to a certified path, as MMS reports it: setup, solve, certification.
   const Stopwatch total;
   ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
@@ -321,7 +366,8 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   if (settings.certifiedMotions)
     si->setMotionValidator(std::make_shared<CertifiedMotions>(si, layout, checker));
   const double extent = si->getMaximumExtent();
-  setup.setPlanner(makePlanner(si, settings, extent));
+  const MadePlanner made = makePlanner(si, settings, extent);
+  setup.setPlanner(made.planner);
   if (settings.planner == "rrtstar" || settings.planner == "bitstar")
     setup.setOptimizationObjective(std::make_shared<PathLength>(si));
 
@@ -339,10 +385,30 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   OmplResult r;
   r.setupSeconds = total.seconds();
   Stopwatch watch;
-  const ob::PlannerStatus status =
-      setup.solve(ob::PlannerTerminationCondition([&] { return stop(); }));
+  // Progress about once a second, from whichever of the planner's threads checks the
+  // condition first (PRM grows its roadmap on a second one).
+  std::mutex reporting;
+  std::atomic<double> nextReport{1};
+  auto report = [&] {
+    if (total.seconds() < nextReport.load(std::memory_order_relaxed)) return;
+    std::unique_lock lock(reporting, std::try_to_lock);
+    if (!lock || total.seconds() < nextReport) return;
+    nextReport = total.seconds() + 1;
+    OmplResult sofar;
+    sofar.seconds = total.seconds();
+    const GraphSize size = made.size();
+    sofar.states = size.vertices;
+    sofar.edges = size.edges;
+    progress(sofar);
+  };
+  const ob::PlannerStatus status = setup.solve(ob::PlannerTerminationCondition([&] {
+    if (progress) report();
+    return stop();
+  }));
   r.solveSeconds = watch.seconds();
-  r.states = graphSize(*setup.getPlanner(), si, stop);
+  const GraphSize size = made.size();
+  r.states = size.vertices;
+  r.edges = size.edges;
   if (status != ob::PlannerStatus::EXACT_SOLUTION) {
     r.seconds = total.seconds();
     return r;

@@ -3,6 +3,7 @@
 // validity checker (one definition of free space for every planner) and OMPL's discrete motion
 // validator at resolution `resolution`. Returned paths are only resolution-checked by OMPL;
 // mms runs each through its continuous path checker, and a path that fails counts as a failure.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,10 +43,16 @@ struct OmplResult {
   double solveSeconds = 0;     // OMPL's solve alone; the rest certifies
   double simplifySeconds = 0;  // OMPL's simplifier and its path's certification, after `seconds`
   size_t states = 0;           // vertices of the planner's graph or tree
+  size_t edges = 0;            // its edges
 };
+
+/// Called about once a second while OMPL's planner works (from one of its threads), with
+/// the time so far and the size of its graph or tree.
+using OmplProgress = std::function<void(const OmplResult& sofar)>;
 
 /// Plans all robots of the scene jointly (SE(2) per rigid robot, R^2 per translating one).
 /// Seeds OMPL's global RNG: call once per process for reproducible runs.
-OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop);
+OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop,
+                        const OmplProgress& progress = {});
 
 }  // namespace mms

@@ -1,5 +1,6 @@
 #include "io/OmplApp.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -121,12 +122,42 @@ Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes) {
   return parseScene(sceneToJson(scene), cfgFile);
 }
 
+std::vector<Config> splitLongTurns(const std::vector<Config>& waypoints) {
+  std::vector<Config> out;
+  for (size_t k = 0; k < waypoints.size(); ++k) {
+    const Config& b = waypoints[k];
+    if (k > 0) {
+      const Config& a = waypoints[k - 1];
+      double turn = 0;
+      for (size_t i = 2; i < b.size(); i += 3) turn = std::max(turn, std::abs(b[i] - a[i]));
+      // Parts that turn less than pi by more than rounding: OMPL's short way is then the
+      // motion's own way.
+      const size_t parts = size_t(std::floor(turn / (M_PI - 1e-9))) + 1;
+      for (size_t j = 1; j < parts; ++j) {
+        const double t = double(j) / double(parts);
+        Config q(b.size());
+        for (size_t i = 0; i < q.size(); ++i) q[i] = a[i] + t * (b[i] - a[i]);
+        out.push_back(std::move(q));
+      }
+    }
+    out.push_back(b);
+  }
+  return out;
+}
+
 std::string omplPathText(const std::vector<Config>& waypoints) {
   std::ostringstream out;
   out.imbue(std::locale::classic());
   out << std::setprecision(17);
-  for (const Config& q : waypoints) {
-    for (size_t i = 0; i < q.size(); ++i) out << (i ? " " : "") << q[i];
+  for (const Config& q : splitLongTurns(waypoints)) {
+    for (size_t i = 0; i < q.size(); ++i) {
+      double v = q[i];
+      if (i % 3 == 2) {  // into [-pi, pi), OMPL's SO(2)
+        v -= 2 * M_PI * std::floor((v + M_PI) / (2 * M_PI));
+        if (v >= M_PI) v -= 2 * M_PI;
+      }
+      out << (i ? " " : "") << v;
+    }
     out << "\n";
   }
   return out.str();

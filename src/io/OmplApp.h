@@ -17,8 +17,13 @@ struct ImportNotes {
 /// scene is validated as if loaded from a file.
 Scene importOmplApp(const std::string& cfgFile, ImportNotes& notes);
 
-/// Writes a path as OMPL.app's .path text: one "x y theta" line per waypoint (one rigid robot).
+/// Writes a path as OMPL.app's .path text: one "x y theta" line per state (one rigid robot),
+/// describing the same motion. OMPL turns the short way between states and keeps angles in
+/// [-pi, pi), so angles are written there and a segment turning pi or more is split into
+/// equal parts that each turn less.
 std::string omplPathText(const std::vector<Config>& waypoints);
 
+/// The waypoints omplPathText writes: `waypoints` with long turns split, angles unchanged.
+std::vector<Config> splitLongTurns(const std::vector<Config>& waypoints);
 
 }  // namespace mms

@@ -171,7 +171,7 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
   Stopwatch sinceReport;
   auto report = [&](bool force) {
     if (!progress || (!force && sinceReport.seconds() < 1.0)) return;
-    MmsStats now = finish(result, PlanStatus::NotFound, 0).stats;
+    MmsStats now = finish(result, PlanStatus::NotFound, total.seconds()).stats;
     progress(now);
     sinceReport = Stopwatch();
   };

@@ -5,9 +5,11 @@
 #include <new>
 #include <ostream>
 #include <stdexcept>
+#include <system_error>
 
 #include "mms/Errors.h"
 #include "util/Interrupt.h"
+#include "util/MemoryLimit.h"
 
 namespace mms {
 
@@ -33,6 +35,13 @@ int runAtBoundary(const std::function<int()>& command, std::ostream& err) {
     return kExitInterrupted;
   } catch (const std::bad_alloc&) {
     err << "mms: out of memory (see --memory-limit); no output written\n";
+    return kExitInternal;
+  } catch (const std::system_error& e) {
+    if (outOfMemory(e)) {
+      err << "mms: out of memory (see --memory-limit); no output written\n";
+      return kExitInternal;
+    }
+    err << "mms: internal error: " << oneLine(e.what()) << "\n";
     return kExitInternal;
   } catch (const std::exception& e) {
     err << "mms: internal error: " << oneLine(e.what()) << "\n";
