@@ -163,3 +163,48 @@ TEST(Ompl, PlanCommandWithABaseline) {
   const Outcome bad = runMms("plan " + scene + " --planner astar");
   EXPECT_EQ(bad.code, 2);
 }
+
+// A run that ends without a path still says what it built: the tree's or roadmap's vertices and
+// edges, read where the planner keeps them (a tree has an edge per vertex but its roots).
+TEST(Ompl, UnsolvedRunsCountTheirTreesAndRoadmaps) {
+  const Scene s = loadScene(scenario("two-robots/pacman-0.9.json"));
+  for (const PlannerInfo& info : planners()) {
+    if (info.name == "mms" || info.name == "auto") continue;
+    const PlanResult r =
+        makePlanner(info.name, s, {1, {{"optimize", 0}}})->solve(Termination(planSeconds(0.5)));
+    EXPECT_GT(r.stats.graphNodes, 1u) << info.name;
+    EXPECT_GT(r.stats.graphEdges, 0u) << info.name;
+    const bool roadmap = info.name.find("prm") != std::string::npos;
+    if (!roadmap) {
+      EXPECT_LT(r.stats.graphEdges, r.stats.graphNodes) << info.name;
+    }
+    EXPECT_EQ(r.stats.counts.front().first, "states");
+    EXPECT_EQ(r.stats.counts.front().second, r.stats.graphNodes) << info.name;
+  }
+}
+
+// OMPL's planners report progress as MMS does, about once a second, with the time so far.
+TEST(Ompl, ProgressComesAboutOnceASecond) {
+  const Scene s = loadScene(scenario("two-robots/pacman-0.9.json"));
+  for (const std::string name : {"rrtconnect", "prm"}) {
+    std::vector<PlanStatistics> seen;
+    const PlanResult r =
+        makePlanner(name, s, {1, {{"optimize", 0}}})
+            ->solve(Termination(2.5), [&](const PlanStatistics& p) { seen.push_back(p); });
+    ASSERT_FALSE(seen.empty()) << name;
+    EXPECT_LE(seen.size(), 3u) << name;
+    EXPECT_GE(seen.front().seconds, 1.0) << name;
+    EXPECT_GT(seen.back().graphNodes, 0u) << name;
+    EXPECT_LE(seen.back().graphNodes, r.stats.graphNodes) << name;
+  }
+  // On the command line: progress lines on stderr, the counts and the time without a path.
+  const Outcome cli = runMms("plan " + quote(scenario("two-robots/pacman-0.9.json")) +
+                             " --planner rrtconnect --time-limit 2.5");
+  EXPECT_EQ(cli.code, 1);
+  EXPECT_NE(cli.err.find("mms plan: 1.0 s: "), std::string::npos) << cli.err;
+  EXPECT_EQ(cli.err.find("round"), std::string::npos) << cli.err;
+  EXPECT_NE(cli.out.find(" states; graph "), std::string::npos) << cli.out;
+  EXPECT_EQ(cli.out.find("rounds"), std::string::npos) << cli.out;
+  EXPECT_EQ(cli.out.find("to the path"), std::string::npos)
+      << "no path, no time to it: " << cli.out;
+}

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "Support.h"
 
@@ -89,6 +91,111 @@ TEST(CliInput, AnglesBeyondAFullTurnGetANoteAboutRadians) {
   EXPECT_NE(r.err.find("robots[0].start: angle 90 is more than a full turn; angles are in radians"),
             std::string::npos)
       << r.err;
+  // Quiet silences progress, not a likely mistake in the input.
+  const test::Outcome quiet = run("plan " + test::quote(deg) + " -q --time-limit 5");
+  EXPECT_NE(quiet.err.find("angles are in radians"), std::string::npos) << quiet.err;
+}
+
+// GeoJSON and shapely write polygons as closed rings: the same polygon, read with a note.
+TEST(CliInput, AClosedRingIsThePolygonWithANote) {
+  test::TempDir dir;
+  const std::string scene = dir.path("s.json"), closed = dir.path("closed.json");
+  ASSERT_EQ(run("scenario open-clutter --seed 2 -o " + test::quote(scene)).code, 0);
+  json s = readJson(scene);
+  for (json& o : s["obstacles"]) o.push_back(o[0]);
+  s["robots"][0]["shape"].push_back(s["robots"][0]["shape"][0]);
+  std::ofstream(closed) << s.dump();
+  const test::Outcome r = run("validate " + test::quote(closed));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(
+      r.err.find(std::to_string(s["obstacles"].size() + 1) + " polygon(s) given as closed rings"),
+      std::string::npos)
+      << r.err;
+  EXPECT_EQ(lines(r.err), 1u) << r.err;
+  const test::Outcome written = run("import " + test::quote(closed) + " -q -o -");
+  ASSERT_EQ(written.code, 0) << written.err;
+  EXPECT_EQ(json::parse(written.out)["obstacles"], readJson(scene)["obstacles"]);
+}
+
+// A path for other robots names both lists.
+TEST(CliInput, APathForOtherRobotsNamesThem) {
+  test::TempDir dir;
+  const std::string path = dir.file(
+      "p.json",
+      R"({"format": "mms-path/1", "robots": ["a", "b"], "waypoints": [[0, 0, 0, 1, 1, 0]]})");
+  const test::Outcome r = run("check " + test::quote(test::scenario("one-robot/bar-slot.json")) +
+                              " " + test::quote(path));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("robots: the path moves 2 robot(s) [a, b], the scene has 1 [bar]"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(lines(r.err), 1u);
+}
+
+// What a run prints reads as English and adds up: "1 round", no time "to the path" when there
+// is none, a query's phases within its own time, and numbers in path files as declared.
+TEST(CliInput, TheSummaryReadsRightAndAddsUp) {
+  test::TempDir dir;
+  const std::string scene = test::quote(test::scenario("one-robot/bar-slot.json"));
+  const std::string path = dir.path("p.json");
+  const test::Outcome one = run("plan " + scene + " --planner mms -o " + test::quote(path));
+  ASSERT_EQ(one.code, 0) << one.err;
+  EXPECT_NE(one.out.find("; 1 round\n"), std::string::npos) << one.out;
+  const json parameters = readJson(path)["parameters"];
+  EXPECT_TRUE(parameters["n_theta"].is_number_integer()) << parameters;
+  EXPECT_EQ(parameters["objective"], "length") << parameters;
+  const test::Outcome none =
+      run("plan " + test::quote(test::scenario("one-robot/zigzag-slot.json")) +
+          " --planner mms --time-limit 1");
+  EXPECT_EQ(none.code, 1);
+  EXPECT_NE(none.out.find(" s = slices "), std::string::npos) << none.out;
+  EXPECT_EQ(none.out.find("to the path"), std::string::npos) << none.out;
+  const std::string queries = dir.file(
+      "q.json",
+      R"({"format": "mms-queries/1", "queries": [{"start": [-6, 0, 1.5], "goal": [6, 0, 1.5]},
+          {"start": [6, 0, 1.5], "goal": [-6, 0, 1.5]}, {"start": [-6, 2, 1.5], "goal": [6, 3, 1.5]}]})");
+  for (const std::string planner : {"mms", "auto"}) {
+    const test::Outcome q =
+        run("plan " + scene + " --planner " + planner + " --queries " + test::quote(queries));
+    ASSERT_EQ(q.code, 0) << q.err;
+    std::istringstream in(q.out);
+    size_t checked = 0;
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("  time: ", 0) != 0) continue;
+      std::istringstream l(line.substr(8));
+      double seconds = 0, sum = 0;
+      std::string word;
+      l >> seconds >> word >> word >> word;  // "s to the path"
+      l >> word;                             // "="
+      for (double t; l >> word >> t;) {
+        sum += t;
+        if (!(l >> word) || word != "+") break;
+      }
+      EXPECT_LE(sum, seconds + 0.004) << planner << ": " << line;
+      ++checked;
+    }
+    EXPECT_EQ(checked, 3u) << q.out;
+  }
+}
+
+// A straight move between two poses at one angle ends without a turn: the optimiser tries
+// shortcuts from the start and to the end.
+TEST(CliInput, AStraightMoveGainsNoRotation) {
+  test::TempDir dir;
+  const std::string scene = dir.file("straight.json",
+                                     R"({"format": "mms-scene/1", "bounds": [-5, -5, 5, 5],
+          "obstacles": [[[3, 3], [4, 3], [4, 4], [3, 4]]],
+          "robots": [{"name": "r", "shape": [[-0.5, -0.2], [0.5, -0.2], [0.5, 0.2], [-0.5, 0.2]],
+                      "start": [0, 0, 0.3], "goal": [1, 0, 0.3]}]})");
+  for (const std::string planner : {"mms", "auto"})
+    for (int seed = 1; seed <= 3; ++seed) {
+      const test::Outcome r = run("plan " + test::quote(scene) + " -q --planner " + planner +
+                                  " --seed " + std::to_string(seed));
+      ASSERT_EQ(r.code, 0) << r.err;
+      const size_t at = r.out.find("rotation ");
+      ASSERT_NE(at, std::string::npos) << r.out;
+      EXPECT_LT(std::stod(r.out.substr(at + 9)), 1e-9) << planner << " seed " << seed << r.out;
+    }
 }
 
 TEST(CliInput, AShapeInWorldCoordinatesIsToldItsFrame) {

@@ -90,7 +90,9 @@ TEST(Import, BadOmplAppInputIsOneLineNamingFileAndField) {
     std::string cfg, expect;
   } cases[] = {
       {cfgText("square.dae", "square.dae", false), "goal.x: missing"},
-      {cfgText("square.dae", "nothere.dae"), "no such mesh file"},
+      {cfgText("square.dae", "nothere.dae"), "no such mesh file in " +
+                                                 std::filesystem::canonical(dir.path("")).string() +
+                                                 " (meshes are looked for beside the .cfg file)"},
       {cfgText("square.dae", "broken.dae"), "broken.dae: (XML"},
       {"[other]\nx = 1\n", "[problem]: no such section"},
       {cfgText("square.dae", "square.dae") + "", ""},
@@ -203,6 +205,24 @@ std::string discopygalScene() {
       {"__class__": "RobotDisc", "radius": 0.5, "start": [-6, 6], "end": [6, 6], "data": {}},
       {"__class__": "RobotRod", "length": 2, "start": [[-7, 0], 1.57], "end": [[5, 0], 0], "data": {}}],
     "metadata": {"version": "1.1.1", "solvers": "", "details": ""}})";
+}
+
+// Hundreds of discs are one conversion: one note says how many, not one per disc.
+TEST(Import, DiscRobotsAreNotedOnce) {
+  std::string robots;
+  for (int i = 0; i < 12; ++i)
+    robots += std::string(i ? "," : "") +
+              R"({"__class__": "RobotDisc", "radius": 0.4, "start": [)" + std::to_string(2 * i) +
+              R"(, 0], "end": [)" + std::to_string(2 * i) + R"(, 5], "data": {}})";
+  TempDir dir;
+  const std::string file = dir.file(
+      "discs.json", R"({"__class__": "Scene", "obstacles": [], "robots": [)" + robots + "]}");
+  ImportNotes notes;
+  importDiscopygal(file, notes);
+  std::string disc;
+  for (const std::string& w : notes.warnings)
+    if (w.find("-gon") != std::string::npos) disc += w + "\n";
+  EXPECT_EQ(disc, "12 disc robot(s) as 32-gons around the discs (conservative)\n");
 }
 
 TEST(Import, DiscopygalScenesConvertConservatively) {

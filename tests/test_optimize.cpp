@@ -142,6 +142,7 @@ TEST(Optimize, ClearanceObjectiveMovesTheWaypointsAwayFromTheWall) {
   const double low = 4.4 + 0.2 + 0.01;
   std::vector<Config> w{{2, 5, 0}, {8.4, low, 0}, {11.6, low, 0}, {18, 5, 0}};
   ASSERT_TRUE(certified(s, w));
+  const std::vector<Config> grazing = w;
   const CollisionChecker checker(s);
   auto waypointClearance = [&](const std::vector<Config>& p) {
     double m = 1e9;
@@ -155,7 +156,11 @@ TEST(Optimize, ClearanceObjectiveMovesTheWaypointsAwayFromTheWall) {
   optimize(s, w, 1, PathObjective::Clearance);
   ASSERT_TRUE(certified(s, w));
   EXPECT_GT(waypointClearance(w), before + 0.1);
-  EXPECT_GT(checkPath(s, checker, w).minClearance, checkPath(s, checker, shortest).minClearance);
+  // Away from the contacts the grazing path makes, and no closer to the walls than the shortest
+  // path (which may run through the gap's middle).
+  EXPECT_GT(checkPath(s, checker, w).minClearance,
+            checkPath(s, checker, grazing).minClearance + 0.1);
+  EXPECT_GE(checkPath(s, checker, w).minClearance, checkPath(s, checker, shortest).minClearance);
 }
 
 TEST(Optimize, EveryPlannerOptimisesWhenAskedAndNotWhenTold) {

@@ -294,7 +294,7 @@ TEST_F(BadPath, EachProblemIsNamed) {
   expectBad(p, "robots[0]", "expected robot 'left'");
   p = base;
   p["robots"] = {"left"};
-  expectBad(p, "robots", "expected 2 elements, found 1");
+  expectBad(p, "robots", "the path moves 1 robot(s) [left], the scene has 2 [left, right]");
   p = base;
   p["waypoints"] = json::array();
   expectBad(p, "waypoints", "expected at least 1 elements");

@@ -45,11 +45,16 @@ Box parseBounds(const std::string& text) {
 }
 }  // namespace
 
+static void printNotes(const ImportNotes& notes, bool quiet) {
+  for (const std::string& w : notes.mistakes) std::fprintf(stderr, "mms: note: %s\n", w.c_str());
+  if (!quiet)
+    for (const std::string& w : notes.warnings) std::fprintf(stderr, "mms: note: %s\n", w.c_str());
+}
+
 Scene readScene(const std::string& file, bool quiet) {
   ImportNotes notes;
   Scene s = loadAnyScene(file, notes);
-  if (!quiet)
-    for (const std::string& w : notes.warnings) std::fprintf(stderr, "mms: note: %s\n", w.c_str());
+  printNotes(notes, quiet);
   return s;
 }
 
@@ -135,10 +140,10 @@ int importScene(const ImportArgs& a) {
     // Validated again in the new bounds: a robot or obstacle outside them is named.
     s = parseScene(sceneToJson(s), a.input + " (with --bounds " + a.bounds + ")");
   }
-  if (!a.quiet)
-    for (const std::string& w : notes.warnings)
-      if (a.bounds.empty() || w.rfind("bounds:", 0) != 0)
-        std::fprintf(stderr, "mms: note: %s\n", w.c_str());
+  // Bounds given: the note on the bounds made up goes.
+  if (!a.bounds.empty())
+    std::erase_if(notes.warnings, [](const std::string& w) { return w.rfind("bounds:", 0) == 0; });
+  printNotes(notes, a.quiet);
   saveScene(s, a.output);
   if (!a.quiet) {
     size_t vertices = 0;
@@ -165,7 +170,7 @@ int exportScene(const ExportArgs& a) {
   }
   writeFileAtomically(a.output, text);
   if (!a.quiet) {
-    for (const std::string& w : notes.warnings) std::fprintf(stderr, "mms: note: %s\n", w.c_str());
+    printNotes(notes, false);
     std::printf("%s: written (%s)\n", a.output.c_str(), a.to.c_str());
   }
   return 0;

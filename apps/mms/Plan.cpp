@@ -47,9 +47,15 @@ std::string countsText(const PlanStatistics& s) {
   return out;
 }
 
-void printStatistics(const PlanStatistics& s) {
-  std::printf("  built: %s; graph %zu nodes, %zu edges; %zu rounds\n", countsText(s).c_str(),
-              s.graphNodes, s.graphEdges, s.rounds);
+// "; 3 rounds", "; 1 round", or nothing for a planner without rounds (OMPL's).
+std::string roundsText(size_t rounds) {
+  if (rounds == 0) return "";
+  return "; " + std::to_string(rounds) + (rounds == 1 ? " round" : " rounds");
+}
+
+void printStatistics(const PlanStatistics& s, bool found) {
+  std::printf("  built: %s; graph %zu nodes, %zu edges%s\n", countsText(s).c_str(), s.graphNodes,
+              s.graphEdges, roundsText(s.rounds).c_str());
   std::string phases, after;
   for (const auto& [name, t] : s.phases) {
     std::string& to = afterFirstPath(name) ? after : phases;
@@ -57,7 +63,7 @@ void printStatistics(const PlanStatistics& s) {
     std::snprintf(buf, sizeof buf, "%s%s %.3f", to.empty() ? "" : " + ", spaced(name).c_str(), t);
     to += buf;
   }
-  std::printf("  time: %.3f s to the path = %s%s%s\n", s.seconds, phases.c_str(),
+  std::printf("  time: %.3f s %s= %s%s%s\n", s.seconds, found ? "to the path " : "", phases.c_str(),
               after.empty() ? "" : "; then ", after.c_str());
   if (s.rejectedPaths)
     std::printf("  %zu candidate motions failed certification\n", s.rejectedPaths);
@@ -97,7 +103,7 @@ int report(const PlanArgs& a, const Scene& scene, const std::string& label, cons
       std::printf("%s: no path found within %.3g s (%s, %s)\n", label.c_str(), a.timeLimit,
                   a.planner.c_str(),
                   r.status == PlanStatus::Cancelled ? "interrupted" : "time limit");
-    printStatistics(r.stats);
+    printStatistics(r.stats, false);
     return 1;
   }
   Path path;
@@ -129,7 +135,7 @@ int report(const PlanArgs& a, const Scene& scene, const std::string& label, cons
       "rad, min clearance %.3g\n",
       label.c_str(), plannerName(a, r).c_str(), r.stats.seconds, path.waypoints.size(),
       c.translation, c.rotation, c.minClearance);
-  printStatistics(r.stats);
+  printStatistics(r.stats, true);
   return 0;
 }
 
@@ -184,8 +190,9 @@ int plan(const PlanArgs& a) {
     std::atomic<double> lastReport{0};
     auto progress = [&](const PlanStatistics& s) {
       if (a.quiet || clock.seconds() < 1.0) return;
-      std::fprintf(stderr, "mms plan: %.1f s, round %zu: %s, graph %zu nodes / %zu edges\n",
-                   clock.seconds(), s.rounds, countsText(s).c_str(), s.graphNodes, s.graphEdges);
+      const std::string round = s.rounds ? ", round " + std::to_string(s.rounds) : "";
+      std::fprintf(stderr, "mms plan: %.1f s%s: %s, graph %zu nodes / %zu edges\n", clock.seconds(),
+                   round.c_str(), countsText(s).c_str(), s.graphNodes, s.graphEdges);
       lastReport = clock.seconds();
     };
     // A planner reports between manifolds; one manifold among thousands of obstacles takes

@@ -94,6 +94,9 @@ struct PlanResult {
   PlanStatistics stats;
   /// Every declared parameter's value in force (defaults included), by ParamSpec::key().
   std::map<std::string, double> parameters;
+  /// The planner's declarations of them: how each reads in files and in Python (a whole
+  /// number, a flag, a named choice such as objective "length").
+  std::vector<ParamSpec> parameterSpecs;
   RoadmapPicture roadmap;  // when asked for and the planner has one
   bool found() const { return status == PlanStatus::Found; }
 };

@@ -16,6 +16,7 @@ on the same scenes and checker for comparison. docs/python.md has a walk-through
 from __future__ import annotations
 
 import csv as _csv
+import difflib as _difflib
 import os as _os
 import shutil as _shutil
 import subprocess as _subprocess
@@ -163,8 +164,11 @@ class Result:
         return self.stats["seconds"]
 
     @property
-    def solved_by(self) -> str:
-        """The portfolio member ("mms" or a sampler) whose path this is; the planner otherwise."""
+    def solved_by(self) -> str | None:
+        """The portfolio member ("mms" or a sampler) whose path this is; the planner otherwise;
+        None when no path was found."""
+        if not self.found:
+            return None
         return self.stats.get("solved_by") or self.planner
 
     def robot_path(self, robot: int | str) -> list[tuple[float, float, float]]:
@@ -214,9 +218,28 @@ def plan(scene: Scene, planner: str = "auto", *, seed: int = 1, time_limit: floa
     cannot take. A path is returned as found only once the continuous checker certified it."""
     if not isinstance(scene, Scene):
         raise InputError(f"mms.plan: scene: expected an mms.Scene, not {type(scene).__name__}")
+    _check_keywords(_text(planner, "mms.plan: planner"), params)
     return Result(_mms.plan(scene, _text(planner, "mms.plan: planner"),
                             _whole(seed, "mms.plan: seed"),
                             _number(time_limit, "mms.plan: time_limit"), params, progress))
+
+
+def _check_keywords(planner: str, params: dict) -> None:
+    """Refuses a keyword no parameter of `planner` has, naming the nearest known one."""
+    info = next((p for p in planners() if p["name"] == planner), None)
+    if info is None:
+        close = _difflib.get_close_matches(planner, [p["name"] for p in planners()], n=1)
+        hint = f"; did you mean '{close[0]}'?" if close else ""
+        raise InputError(f"mms.plan: planner '{planner}': unknown" + hint)
+    names = [p["name"] for p in info["params"]]
+    for key in params:
+        if key in names or key.replace("-", "_") in names:
+            continue
+        close = _difflib.get_close_matches(key, names + ["time_limit", "seed", "progress"], n=1)
+        known = ", ".join(names) if names else "none"
+        hint = f"; did you mean {close[0]}=?" if close else ""
+        raise InputError(f"mms.plan: {key}: not a parameter of planner '{planner}' "
+                         f"(its parameters: {known}){hint}")
 
 
 def check(scene: Scene, path) -> Check:

@@ -95,8 +95,10 @@ PyScene sceneFromData(const py::handle& data, const std::string& source) {
   auto scene = std::make_shared<const Scene>(parseScene(doc, source));
   // The same notes mms.load_scene gives for a file (angles in degrees by mistake).
   ImportNotes notes;
+  noteClosedRings(doc, source, notes);
   noteAngles(*scene, source, notes);
-  for (const std::string& w : notes.warnings)
+  notes.mistakes.insert(notes.mistakes.end(), notes.warnings.begin(), notes.warnings.end());
+  for (const std::string& w : notes.mistakes)
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
   return {std::move(scene), source};
 }
@@ -166,6 +168,11 @@ double paramValue(const ParamSpec& spec, const py::handle& v) {
   const std::string at = "mms.plan: " + spec.key();
   double x = 0;
   if (py::isinstance<py::str>(v)) {
+    // Text names a choice; a number given as text is a mistake Python users do not make on
+    // purpose.
+    if (spec.choices.empty())
+      throw InputError(at + ": " + std::string(py::str(py::repr(v))).substr(0, 40) +
+                       " is not a number (give it without quotes)");
     if (const std::string why = spec.parse(v.cast<std::string>(), x); !why.empty())
       throw InputError(at + ": " + why);
     return x;
@@ -325,7 +332,9 @@ PYBIND11_MODULE(_mms, m) {
   m.def("load_scene", [](const std::string& file) {
     ImportNotes notes;
     PyScene s{std::make_shared<const Scene>(loadAnyScene(file, notes)), file};
-    return py::make_tuple(s, notes.warnings);
+    std::vector<std::string> all = notes.mistakes;
+    all.insert(all.end(), notes.warnings.begin(), notes.warnings.end());
+    return py::make_tuple(s, all);
   });
   m.def("scenario_names", [] { return scenarioNames(); });
   m.def("scenario", [](const ScenarioRequest& r) {
@@ -382,7 +391,8 @@ PYBIND11_MODULE(_mms, m) {
       .def_property_readonly("scene", [](const PyResult& r) { return r.scene; })
       .def_property_readonly("stats",
                              [](const PyResult& r) { return fromJson(toJson(r.result.stats)); })
-      .def_property_readonly("parameters", [](const PyResult& r) { return r.result.parameters; })
+      .def_property_readonly("parameters",
+                             [](const PyResult& r) { return fromJson(parametersJson(r.result)); })
       .def_property_readonly(
           "certificate", [](const PyResult& r) { return certificateDict(r.result.certificate); })
       .def("save", [](const PyResult& r, const std::string& file) {

@@ -63,7 +63,14 @@ def test_two_robots_and_a_sampler(tmp_path):
 def test_parameters_as_keywords(bar_slot):
     r = mms.plan(bar_slot, "mms", time_limit=30, n_theta=8, objective="clearance", optimize=True)
     assert r.found
-    assert r.parameters["n_theta"] == 8 and r.parameters["objective"] == 1
+    assert r.parameters["n_theta"] == 8 and r.parameters["objective"] == "clearance"
+    assert type(r.parameters["n_theta"]) is int
+    with pytest.raises(mms.InputError, match=r"n_theta: '8' is not a number"):
+        mms.plan(bar_slot, "mms", n_theta="8")
+    with pytest.raises(mms.InputError, match=r"timelimit: .*did you mean time_limit="):
+        mms.plan(bar_slot, "mms", timelimit=3)
+    with pytest.raises(mms.InputError, match=r"unknown; did you mean 'rrtconnect'"):
+        mms.plan(bar_slot, "rrtconect")
     with pytest.raises(mms.InputError, match="not a parameter of planner 'mms'.*n_theta"):
         mms.plan(bar_slot, "mms", bogus=1)
     with pytest.raises(mms.InputError, match=r"^mms.plan: n_theta: 0 is not in \[1, "):
@@ -98,6 +105,7 @@ def test_check_says_why(bar_slot):
 def test_unsolvable_scene_ends_at_the_limit():
     r = mms.plan(mms.Scene(box_scene(wall=True)), "mms", time_limit=0.5)
     assert not r.found and r.status == "not_found"
+    assert r.solved_by is None
     assert r.path == []
     with pytest.raises(mms.InputError, match="no path to save"):
         r.save("never-written.json")

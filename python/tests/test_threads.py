@@ -94,6 +94,18 @@ def test_progress_reports_on_the_calling_thread():
     assert not r.found and seen
     assert [s["rounds"] for s in seen] == sorted(s["rounds"] for s in seen)
     assert all("phases" in s for s in seen)
+    # The time so far, as the result's: one definition of seconds.
+    assert all(0 < s["seconds"] <= r.stats["seconds"] for s in seen), seen
+
+
+def test_ompl_planners_report_progress_too():
+    pacman = mms.scenario("pacman", tightness=0.9)
+    seen = []
+    r = mms.plan(pacman, "rrtconnect", time_limit=2.5, progress=seen.append)
+    assert seen, "no progress from an OMPL planner"
+    assert all(s["seconds"] >= 1 and s["graph_nodes"] > 0 for s in seen), seen
+    assert r.stats["graph_nodes"] >= seen[-1]["graph_nodes"] > 0
+    assert r.stats["graph_edges"] > 0
 
 
 def test_an_exception_in_progress_stops_the_planner():

@@ -172,9 +172,16 @@ class OneRobotMms : public Planner {
         picture_(picture),
         parameters_(std::move(parameters)) {}
 
+  // The roadmap lives on from query to query; its statistics count its whole life. Each query
+  // reports the time it took, its phases adding up to it, beside what the roadmap holds.
   PlanResult solve(const Termination& stop, const Progress& progress) override {
-    const MmsResult r = planner_.solve(start_, goal_, stop, progressOf<MmsStats>(progress));
+    const PlanStatistics before = spent_;
+    Progress perQuery;
+    if (progress) perQuery = [&](const PlanStatistics& s) { progress(since(s, before)); };
+    const MmsResult r = planner_.solve(start_, goal_, stop, progressOf<MmsStats>(perQuery));
     PlanResult out = planResultOf(r, parameters_);
+    spent_ = out.stats;
+    out.stats = since(out.stats, before);
     if (picture_ && out.found()) {
       for (const ConnectivityGraph::Node& n : r.cells)
         if (const auto* s =
@@ -192,10 +199,20 @@ class OneRobotMms : public Planner {
   }
 
  private:
+  // `now` less what `before` had spent: seconds and each phase.
+  static PlanStatistics since(PlanStatistics now, const PlanStatistics& before) {
+    now.seconds -= before.seconds;
+    for (auto& [name, t] : now.phases)
+      for (const auto& [was, spent] : before.phases)
+        if (was == name) t -= spent;
+    return now;
+  }
+
   MmsPlanner planner_;
   Pose start_, goal_;
   bool picture_;
   std::map<std::string, double> parameters_;
+  PlanStatistics spent_;  // by the queries before
 };
 
 // A two- or k-robot MMS planner behind the seam (one query: its start and goal are the scene's).

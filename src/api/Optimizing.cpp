@@ -28,13 +28,14 @@ using Factory = std::function<std::unique_ptr<Planner>(const Scene& scene, uint6
 class Optimizing final : public Planner {
  public:
   Optimizing(Factory make, const Scene& scene, uint64_t seed, OptimizeSettings settings,
-             std::map<std::string, double> parameters)
+             std::map<std::string, double> parameters, std::vector<ParamSpec> specs)
       : make_(std::move(make)),
         inner_(make_(scene, seed)),
         scene_(scene),
         seed_(seed),
         settings_(settings),
-        parameters_(std::move(parameters)) {}
+        parameters_(std::move(parameters)),
+        specs_(std::move(specs)) {}
   // What a time limit cut is freed here, once no planner runs (util/Deferred.h).
   ~Optimizing() override {
     inner_->finishBackgroundWork();  // what a lost race's MMS cuts is freed here too
@@ -50,6 +51,7 @@ class Optimizing final : public Planner {
     freeDeferred();
     PlanResult r = inner_->solve(stop, progress);
     for (const auto& [k, v] : parameters_) r.parameters[k] = v;
+    r.parameterSpecs = specs_;
     if (!r.found() || parameters_.at("optimize") == 0) return r;
     const CollisionChecker checker(scene_);
     OptimizeStats total;
@@ -135,6 +137,7 @@ class Optimizing final : public Planner {
   uint64_t seed_;
   OptimizeSettings settings_;
   std::map<std::string, double> parameters_;
+  std::vector<ParamSpec> specs_;  // every parameter of the planner, its own and these
 };
 
 }  // namespace
@@ -170,7 +173,7 @@ PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
   info.params.push_back(optimize);
   info.params.push_back(objective);
   info.params.push_back(restarts);
-  info.make = [make = info.make, optimize, objective, restarts](
+  info.make = [make = info.make, optimize, objective, restarts, specs = info.params](
                   const Scene& scene, const PlannerParams& params, const std::string& source) {
     OptimizeSettings s;
     s.objective =
@@ -184,7 +187,8 @@ PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
         std::move(factory), scene, params.seed, s,
         std::map<std::string, double>{{"optimize", paramValue(params, optimize)},
                                       {"objective", paramValue(params, objective)},
-                                      {"restarts", paramValue(params, restarts)}});
+                                      {"restarts", paramValue(params, restarts)}},
+        specs);
   };
   return info;
 }

@@ -18,8 +18,24 @@ void noteAngles(const Scene& scene, const std::string& source, ImportNotes& note
         std::ostringstream w;
         w << source << ": robots[" << i << "]." << end << ": angle " << pose.theta
           << " is more than a full turn; angles are in radians";
-        notes.warnings.push_back(w.str());
+        notes.mistakes.push_back(w.str());
       }
+}
+
+void noteClosedRings(const nlohmann::json& doc, const std::string& source, ImportNotes& notes) {
+  auto closed = [](const nlohmann::json& ring) {
+    return ring.is_array() && ring.size() >= 4 && ring.front() == ring.back();
+  };
+  size_t n = 0;
+  if (doc.is_object() && doc.contains("obstacles") && doc["obstacles"].is_array())
+    for (const auto& o : doc["obstacles"]) n += closed(o);
+  if (doc.is_object() && doc.contains("robots") && doc["robots"].is_array())
+    for (const auto& r : doc["robots"])
+      if (r.is_object() && r.contains("shape")) n += closed(r["shape"]);
+  if (n)
+    notes.warnings.push_back(source + ": " + std::to_string(n) +
+                             " polygon(s) given as closed rings (the first vertex repeated "
+                             "last): read without the repeat");
 }
 
 Scene loadAnyScene(const std::string& file, ImportNotes& notes) {
@@ -30,8 +46,9 @@ Scene loadAnyScene(const std::string& file, ImportNotes& notes) {
   } else {
     // Parsed once, whichever format it turns out to be.
     const json_in::Json doc = json_in::parseFile(file);
-    scene = ext == ".json" && isDiscopygal(doc) ? importDiscopygal(doc, file, notes)
-                                                : parseScene(doc, file);
+    const bool discopygal = ext == ".json" && isDiscopygal(doc);
+    if (!discopygal) noteClosedRings(doc, file, notes);
+    scene = discopygal ? importDiscopygal(doc, file, notes) : parseScene(doc, file);
   }
   noteAngles(scene, file, notes);
   return scene;

@@ -88,6 +88,7 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
                              std::to_string(kDiscSides) + "-gons around the discs (conservative)");
   const Node robots = root["robots"];
   const size_t count = robots.arraySize(1, kMaxRobots);
+  size_t discRobots = 0;
   for (size_t i = 0; i < count; ++i) {
     const Node r = robots[i];
     r.requireObject();
@@ -105,9 +106,7 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
                  e = r["end"].point(json_in::kMaxCoordinate);
       robot.start = {s.x, s.y, 0};
       robot.goal = {e.x, e.y, 0};
-      if (cls == "RobotDisc")
-        notes.warnings.push_back(robot.name + ": disc robot as a " + std::to_string(kDiscSides) +
-                                 "-gon around the disc (conservative)");
+      discRobots += cls == "RobotDisc";
     } else if (cls == "RobotRod") {
       const double len = positive(r["length"]);
       const double w = len / 100;
@@ -128,6 +127,10 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
     }
     scene.robots.push_back(robot);
   }
+  // One note for them all: a scene of four hundred discs is not four hundred surprises.
+  if (discRobots)
+    notes.warnings.push_back(std::to_string(discRobots) + " disc robot(s) as " +
+                             std::to_string(kDiscSides) + "-gons around the discs (conservative)");
   // Bounds: the box around obstacles and robots at start and goal, grown by 5 %.
   Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
   auto grow = [&](Vec2 p) {

@@ -9,7 +9,10 @@ namespace mms {
 Scene readSceneFile(const std::string& file, std::vector<std::string>* notes) {
   ImportNotes n;
   Scene s = loadAnyScene(file, n);
-  if (notes) notes->insert(notes->end(), n.warnings.begin(), n.warnings.end());
+  if (notes) {
+    notes->insert(notes->end(), n.mistakes.begin(), n.mistakes.end());
+    notes->insert(notes->end(), n.warnings.begin(), n.warnings.end());
+  }
   return s;
 }
 

@@ -40,8 +40,13 @@ void splitPinched(const Ring& ring, std::vector<Ring>& out) {
 }
 
 MeshShape meshPolygons(const std::string& mesh, const std::string& what, ImportNotes& notes) {
-  if (!std::filesystem::is_regular_file(mesh))
-    throw InputError(mesh + ": (" + what + "): no such mesh file");
+  if (!std::filesystem::is_regular_file(mesh)) {
+    std::error_code ec;
+    const std::filesystem::path folder =
+        std::filesystem::absolute(std::filesystem::path(mesh).parent_path(), ec);
+    throw InputError(mesh + ": (" + what + "): no such mesh file in " + folder.string() +
+                     " (meshes are looked for beside the .cfg file)");
+  }
   ColladaMesh m = readColladaPlanar(mesh);
   size_t degenerate = 0;
   std::vector<exact::PolygonWithHoles> polys = exact::unionOfTriangles(m.triangles, degenerate);

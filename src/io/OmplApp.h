@@ -11,6 +11,9 @@ namespace mms {
 
 struct ImportNotes {
   std::vector<std::string> warnings;  // what was dropped or changed, one line each
+  /// What looks like a mistake in the input (angles in degrees): shown even where a quiet
+  /// command shows no warnings.
+  std::vector<std::string> mistakes;
 };
 
 /// Throws InputError ("FILE: FIELD: PROBLEM") on anything it cannot read or convert. The

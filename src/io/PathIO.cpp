@@ -26,7 +26,22 @@ Path parsePath(const nlohmann::json& doc, const std::string& source, const Scene
       root["scene"].fail("path is for scene '" + name + "', not '" + scene.name + "'");
   }
   const Node robots = root["robots"];
-  const size_t k = robots.arraySize(scene.robots.size(), scene.robots.size());
+  robots.arraySize(0, kMaxWaypoints);
+  if (robots.json().size() != scene.robots.size()) {
+    // Both lists named: a path for another scene is seen at once.
+    auto names = [](auto&& list) {
+      std::string out;
+      for (const auto& n : list) out += (out.empty() ? "" : ", ") + n;
+      return "[" + out + "]";
+    };
+    std::vector<std::string> mine, theirs;
+    for (const auto& n : robots.json())
+      mine.push_back(n.is_string() ? n.get<std::string>() : n.dump());
+    for (const Robot& r : scene.robots) theirs.push_back(r.name);
+    robots.fail("the path moves " + std::to_string(mine.size()) + " robot(s) " + names(mine) +
+                ", the scene has " + std::to_string(theirs.size()) + " " + names(theirs));
+  }
+  const size_t k = scene.robots.size();
   for (size_t i = 0; i < k; ++i)
     if (robots[i].string() != scene.robots[i].name)
       robots[i].fail("expected robot '" + scene.robots[i].name + "' (scene order), found '" +

@@ -60,10 +60,27 @@ PlanStatistics statisticsFromJson(const nlohmann::json& j) {
   return s;
 }
 
+nlohmann::json parametersJson(const PlanResult& result) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [key, v] : result.parameters) {
+    j[key] = v;
+    for (const ParamSpec& spec : result.parameterSpecs) {
+      if (spec.key() != key) continue;
+      if (!spec.choices.empty() && v >= 0 && size_t(v) < spec.choices.size())
+        j[key] = spec.choices[size_t(v)];
+      else if (spec.type == ParamSpec::Type::Flag)
+        j[key] = v != 0;
+      else if (spec.type == ParamSpec::Type::Integer)
+        j[key] = static_cast<long long>(v);
+    }
+  }
+  return j;
+}
+
 nlohmann::json pathExtra(const PlanResult& result, const std::string& planner, uint64_t seed) {
   return {{"planner", planner},
           {"seed", seed},
-          {"parameters", result.parameters},
+          {"parameters", parametersJson(result)},
           {"statistics", toJson(result.stats, /*timings=*/false)}};
 }
 
@@ -75,7 +92,7 @@ RunSummary summarize(const std::string& scene, const std::string& planner, uint6
   r.seed = seed;
   r.timeLimit = timeLimit;
   r.status = result.status;
-  r.parameters = result.parameters;
+  r.parameters = parametersJson(result);
   r.stats = result.stats;
   r.waypoints = result.waypoints.size();
   r.certificate = result.certificate;
@@ -106,7 +123,8 @@ RunSummary runSummaryFromJson(const nlohmann::json& j) {
   r.seed = j.at("seed").get<uint64_t>();
   r.timeLimit = j.at("time_limit").get<double>();
   r.status = statusFrom(j.at("status").get<std::string>());
-  r.parameters = j.at("parameters").get<std::map<std::string, double>>();
+  r.parameters = j.at("parameters");
+  if (!r.parameters.is_object()) throw std::runtime_error("parameters: not an object");
   r.stats = statisticsFromJson(j.at("statistics"));
   if (j.contains("path")) {
     const auto& p = j["path"];

@@ -15,6 +15,10 @@ inline constexpr const char* kRunFormat = "mms-run/1";
 nlohmann::json toJson(const PlanStatistics& s, bool timings = true);
 PlanStatistics statisticsFromJson(const nlohmann::json& j);
 
+/// The parameters in force as files show them: whole numbers, flags (true, false) and named
+/// choices ("length") as such, by the planner's declarations (PlanResult::parameterSpecs).
+nlohmann::json parametersJson(const PlanResult& result);
+
 /// What a path file keeps of the run besides the waypoints: planner, seed, parameters,
 /// statistics.
 nlohmann::json pathExtra(const PlanResult& result, const std::string& planner, uint64_t seed);
@@ -24,7 +28,7 @@ struct RunSummary {
   uint64_t seed = 1;
   double timeLimit = 0;
   PlanStatus status = PlanStatus::NotFound;
-  std::map<std::string, double> parameters;
+  nlohmann::json parameters;  // as parametersJson writes them
   PlanStatistics stats;
   size_t waypoints = 0;         // of the path, when found
   PathCheckResult certificate;  // translation, rotation, clearance when found; reason when not

@@ -29,6 +29,9 @@ namespace {
 /// A simple polygon with positive area, returned counter-clockwise.
 Ring readPolygon(const Node& node) {
   Ring ring = node.ring(json_in::kMaxCoordinate, json_in::kMaxVertices);
+  // A closed ring (GeoJSON, shapely) repeats its first vertex last: the same polygon.
+  if (ring.size() >= 4 && ring.front().x == ring.back().x && ring.front().y == ring.back().y)
+    ring.pop_back();
   if (auto rep = findRepeatedVertex(ring))
     node.fail("repeated vertex (vertices " + std::to_string(rep->first) + " and " +
               std::to_string(rep->second) + " coincide)");

@@ -102,10 +102,16 @@ void MmsPlanner::addNextSlice() {
   ahead_.pop_front();
 }
 
+MmsStats MmsPlanner::statsSoFar(double seconds) const {
+  MmsStats s = stats_;
+  s.graphNodes = roadmap_.nodeCount();
+  s.graphEdges = roadmap_.edgeCount();
+  s.totalSeconds += seconds;
+  return s;
+}
+
 MmsResult MmsPlanner::finish(MmsResult result, PlanStatus status, double seconds) {
-  stats_.graphNodes = roadmap_.nodeCount();
-  stats_.graphEdges = roadmap_.edgeCount();
-  stats_.totalSeconds += seconds;
+  stats_ = statsSoFar(seconds);
   result.status = status;
   result.stats = stats_;
   return result;
@@ -171,8 +177,7 @@ MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Ter
   Stopwatch sinceReport;
   auto report = [&](bool force) {
     if (!progress || (!force && sinceReport.seconds() < 1.0)) return;
-    MmsStats now = finish(result, PlanStatus::NotFound, total.seconds()).stats;
-    progress(now);
+    progress(statsSoFar(total.seconds()));
     sinceReport = Stopwatch();
   };
   // Slices and lines interleaved in the round's proportion, so that an early connection finds

@@ -103,6 +103,8 @@ class MmsPlanner {
   void addNextSlice();
   PlanStatus solveTranslation(const Pose& start, const Pose& goal, MmsResult& result);
   MmsResult finish(MmsResult result, PlanStatus status, double seconds);
+  /// The statistics of the roadmap's whole life, this query's `seconds` counted.
+  MmsStats statsSoFar(double seconds) const;
 
   Scene scene_;  // a one-robot copy: the planned robot only
   MmsSettings settings_;
