@@ -4,6 +4,7 @@
 
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "Support.h"
@@ -123,6 +124,55 @@ TEST(BenchReport, SpeedupAgainstTheBestOtherPlanner) {
   EXPECT_EQ(md.find("| tight | auto"), std::string::npos) << md;  // auto did not run there
 }
 
+// Every planner ranked per scene, ours or not; without MMS there is no comparison table, not
+// an empty one.
+TEST(BenchReport, EveryPlannerIsRankedAndNoTableIsEmpty) {
+  std::vector<RunRecord> runs;
+  for (uint64_t i = 1; i <= 3; ++i) {
+    runs.push_back(run("prm", i, "found", 0.4));
+    runs.push_back(run("rrtconnect", i, "found", 0.1));
+    runs.push_back(run("kpiece", i, "not_found", 60));
+  }
+  const std::vector<Summary> s = summarize(runs);
+  EXPECT_EQ(speedupReport(s), "");
+  const std::string md = rankingReport(s);
+  EXPECT_NE(md.find("| s | 1 | rrtconnect | 0.1 s, 3/3 | 1× |"), std::string::npos) << md;
+  EXPECT_NE(md.find("|  | 2 | prm | 0.4 s, 3/3 | 4× |"), std::string::npos) << md;
+  EXPECT_NE(md.find("|  | 3 | kpiece | > 60 s, 0/3 | > 600× |"), std::string::npos) << md;
+}
+
+// The pictures Planner Arena shows: the times per run as boxes, the share solved as bars, for
+// every scene and planner.
+TEST(BenchReport, BoxPlotAndSuccessChartRender) {
+  std::vector<RunRecord> runs;
+  for (const std::string scene : {"open", "tight"})
+    for (uint64_t i = 1; i <= 4; ++i) {
+      RunRecord r = run("mms", i, "found", 0.01 * double(i));
+      r.scene = scene;
+      runs.push_back(r);
+      r.planner = "prm";
+      r.status = scene == "tight" && i > 1 ? "not_found" : "found";
+      r.seconds = r.status == "found" ? 0.5 : 60;
+      runs.push_back(r);
+    }
+  TempDir dir;
+  const std::string times = dir.file("times.svg", timesPlot(runs));
+  const std::string success = dir.file("success.svg", successPlot(summarize(runs)));
+  for (const std::string& svg : {times, success})
+    EXPECT_EQ(runCommand("rsvg-convert " + quote(svg) + " -o " + quote(svg + ".png")).code, 0);
+  const std::string t = readFile(times);
+  EXPECT_EQ(std::count(t.begin(), t.end(), '\n') > 10, true);
+  // Four boxes (two scenes, two planners) drawn as rectangles with a white fill.
+  size_t boxes = 0;
+  for (size_t at = 0; (at = t.find("fill=\"white\" stroke=", at)) != std::string::npos; ++at)
+    ++boxes;
+  EXPECT_EQ(boxes, 4u) << t;
+  EXPECT_NE(t.find("3/4 ✗"), std::string::npos) << "the unsolved runs counted";
+  const std::string b = readFile(success);
+  EXPECT_NE(b.find(">1/4<"), std::string::npos) << b;
+  EXPECT_NE(b.find(">4/4<"), std::string::npos) << b;
+}
+
 TEST(BenchReport, OmplLogIsReadByOmplBenchmarkStatistics) {
   TempDir dir;
   std::vector<RunRecord> runs;
@@ -138,6 +188,10 @@ TEST(BenchReport, OmplLogIsReadByOmplBenchmarkStatistics) {
       << r.out << r.err;
   EXPECT_NE(r.out.find("Parsing data for mms"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Parsing data for prm"), std::string::npos);
+  // When the runs began, not "unknown".
+  runs[0].startedAt = 1.8e9;
+  EXPECT_NE(omplLogs(runs, "host")[0].second.find("\nStarting at 2027-01-15 08:00:00 UTC\n"),
+            std::string::npos);
 }
 
 TEST(BenchReport, TightnessPlotRenders) {
@@ -292,4 +346,28 @@ TEST(BenchCommand, BadOptionsExitTwo) {
     EXPECT_EQ(r.code, 2) << opts;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << opts << ": " << r.err;
   }
+}
+
+// By default a small set: the portfolio, MMS and the four OMPL planners the benchmarks compare
+// against; what is about to run, and for how long at most, is said before the first run.
+TEST(BenchCommand, DefaultPlannersAndTheTimeItMayTake) {
+  TempDir dir;
+  const Outcome r = runMms("bench " + quote(scenario("translating/cup.json")) +
+                           " --runs 1 --time-limit 0.5 -o " + quote(dir.path("b")));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.rfind("mms bench: 6 runs to make (1 scene(s) x 6 planner(s) x 1 seed(s)): at "
+                        "most 3 s at 0.5 s each, 1 at a time",
+                        0),
+            0u)
+      << r.err;
+  std::set<std::string> planners;
+  std::istringstream runs(readFile(dir.path("b/runs.jsonl")));
+  for (std::string line; std::getline(runs, line);)
+    planners.insert(nlohmann::json::parse(line)["planner"].get<std::string>());
+  EXPECT_EQ(planners,
+            (std::set<std::string>{"auto", "mms", "prm", "prm-bridge", "rrtconnect", "kpiece"}));
+  const std::string report = readFile(dir.path("b/report.md"));
+  EXPECT_NE(report.find("![time per run](times.svg)"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir.path("b/times.svg")));
+  EXPECT_TRUE(std::filesystem::exists(dir.path("b/success.svg")));
 }

@@ -342,6 +342,33 @@ MadePlanner makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings& s
   throw std::invalid_argument("unknown planner '" + n + "'");
 }
 
+// Progress about once a second, from whichever of the planner's threads checks its
+// termination condition first (PRM grows its roadmap on a second one).
+class ProgressReporter {
+ public:
+  ProgressReporter(const OmplProgress& progress, const MadePlanner& made, const Stopwatch& clock)
+      : progress(progress), made(made), clock(clock) {}
+  void operator()() const {
+    if (!progress || clock.seconds() < next.load(std::memory_order_relaxed)) return;
+    std::unique_lock lock(reporting, std::try_to_lock);
+    if (!lock || clock.seconds() < next) return;
+    next = clock.seconds() + 1;
+    OmplResult sofar;
+    sofar.seconds = clock.seconds();
+    const GraphSize size = made.size();
+    sofar.states = size.vertices;
+    sofar.edges = size.edges;
+    progress(sofar);
+  }
+
+ private:
+  const OmplProgress& progress;
+  const MadePlanner& made;
+  const Stopwatch& clock;
+  mutable std::mutex reporting;
+  mutable std::atomic<double> next{1};
+};
+
 }  // namespace
 
 OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop,
@@ -385,24 +412,9 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   OmplResult r;
   r.setupSeconds = total.seconds();
   Stopwatch watch;
-  // Progress about once a second, from whichever of the planner's threads checks the
-  // condition first (PRM grows its roadmap on a second one).
-  std::mutex reporting;
-  std::atomic<double> nextReport{1};
-  auto report = [&] {
-    if (total.seconds() < nextReport.load(std::memory_order_relaxed)) return;
-    std::unique_lock lock(reporting, std::try_to_lock);
-    if (!lock || total.seconds() < nextReport) return;
-    nextReport = total.seconds() + 1;
-    OmplResult sofar;
-    sofar.seconds = total.seconds();
-    const GraphSize size = made.size();
-    sofar.states = size.vertices;
-    sofar.edges = size.edges;
-    progress(sofar);
-  };
+  const ProgressReporter reporter(progress, made, total);
   const ob::PlannerStatus status = setup.solve(ob::PlannerTerminationCondition([&] {
-    if (progress) report();
+    reporter();
     return stop();
   }));
   r.solveSeconds = watch.seconds();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -10,6 +11,7 @@
 #include <sstream>
 
 #include "mms/Errors.h"
+#include "mms/mms.h"
 #include "render/Plot.h"
 
 namespace mms {
@@ -98,6 +100,17 @@ std::string fmt(const char* f, double v) {
 }
 
 }  // namespace
+
+std::string dateText(double epochSeconds) {
+  std::tm utc{};
+  char buf[32];
+  const bool plausible = std::isfinite(epochSeconds) && epochSeconds > 0 && epochSeconds < 1e15;
+  const std::time_t t = plausible ? std::time_t(epochSeconds) : 0;
+  if (!plausible || !gmtime_r(&t, &utc) ||
+      !std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S UTC", &utc))
+    return "unknown";
+  return buf;
+}
 
 bool RunRecord::failIfOverLimit() {
   if (!solved() || timeLimit <= 0) return false;
@@ -234,6 +247,10 @@ std::string speedupReport(const std::vector<Summary>& summaries) {
     if (!b.count(s.scene) || better(s, *b[s.scene])) b[s.scene] = &s;
   }
   std::ostringstream md;
+  const bool rows = std::any_of(scenes.begin(), scenes.end(), [&](const std::string& scene) {
+    return best[2].count(scene) && (best[0].count(scene) || best[1].count(scene));
+  });
+  if (!rows) return "";  // no MMS, or no other planner: nothing to compare
   md << "| scene | planner | median, solved | best other planner by median | speed-up | MMS "
         "manifolds used / built (median) |\n|---|---|---|---|---|---|\n";
   for (const std::string& scene : scenes)
@@ -253,6 +270,112 @@ std::string speedupReport(const std::vector<Summary>& summaries) {
          << " |\n";
     }
   return md.str();
+}
+
+std::string rankingReport(const std::vector<Summary>& summaries) {
+  std::vector<std::string> scenes;
+  for (const Summary& s : summaries)
+    if (std::find(scenes.begin(), scenes.end(), s.scene) == scenes.end()) scenes.push_back(s.scene);
+  std::ostringstream md;
+  md << "| scene | rank | planner | median, solved | against the first |\n|---|---|---|---|---|\n";
+  for (const std::string& scene : scenes) {
+    std::vector<const Summary*> ranked;
+    for (const Summary& s : summaries)
+      if (s.scene == scene) ranked.push_back(&s);
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [](const Summary* a, const Summary* b) { return better(*a, *b); });
+    const Summary& first = *ranked.front();
+    for (size_t k = 0; k < ranked.size(); ++k) {
+      const Summary& s = *ranked[k];
+      std::string ratio = "–";
+      if (k == 0)
+        ratio = "1×";
+      else if (s.medianSolved && first.medianSolved)
+        ratio = fmt("%.3g×", s.median / first.median);
+      else if (first.medianSolved)
+        ratio = "> " + fmt("%.3g×", s.timeLimit / first.median);
+      md << "| " << (k ? "" : scene) << " | " << k + 1 << " | " << label(s) << " | "
+         << medianText(s) << " | " << ratio << " |\n";
+    }
+  }
+  return md.str();
+}
+
+namespace {
+// Planners in the order they first appear, each with its colour.
+std::vector<std::string> plannerOrder(const std::vector<std::string>& labels) {
+  std::vector<std::string> out;
+  for (const std::string& l : labels)
+    if (std::find(out.begin(), out.end(), l) == out.end()) out.push_back(l);
+  return out;
+}
+}  // namespace
+
+std::string timesPlot(const std::vector<RunRecord>& runs) {
+  std::vector<std::string> labels;
+  for (const RunRecord& r : runs)
+    labels.push_back(r.parameters.empty() ? r.planner : r.planner + " " + r.parameters);
+  const std::vector<std::string> planners = plannerOrder(labels);
+  std::vector<Category> cs;
+  double limit = 0;
+  std::vector<std::string> scenes;
+  for (const RunRecord& r : runs)
+    if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+  for (const std::string& scene : scenes)
+    for (size_t p = 0; p < planners.size(); ++p) {
+      Category c{scene, planners[p], seriesColour(p), {}};
+      size_t unsolved = 0, total = 0;
+      for (size_t i = 0; i < runs.size(); ++i) {
+        if (runs[i].scene != scene || labels[i] != planners[p] || runs[i].status == "not_run")
+          continue;
+        ++total;
+        limit = std::max(limit, runs[i].timeLimit);
+        if (runs[i].solved())
+          c.values.push_back(runs[i].seconds);
+        else
+          ++unsolved;
+      }
+      if (total == 0) continue;
+      if (unsolved) c.note = std::to_string(unsolved) + "/" + std::to_string(total) + " ✗";
+      cs.push_back(std::move(c));
+    }
+  PlotSpec spec;
+  spec.title = "Time to a certified path per run";
+  spec.yLabel = "seconds (log scale)";
+  spec.logY = true;
+  spec.width = std::max(640.0, 220 + 28.0 * double(cs.size()));
+  spec.footnote = "Boxes: quartiles and median of the solved runs; n/m ✗: n of m runs unsolved";
+  if (limit > 0) spec.rules.push_back({limit, "time limit"});
+  return boxPlot(spec, cs);
+}
+
+std::string successPlot(const std::vector<Summary>& summaries) {
+  std::vector<std::string> labels;
+  for (const Summary& s : summaries) labels.push_back(label(s));
+  const std::vector<std::string> planners = plannerOrder(labels);
+  std::vector<Category> cs;
+  for (const std::string& scene : plannerOrder([&] {
+         std::vector<std::string> v;
+         for (const Summary& s : summaries) v.push_back(s.scene);
+         return v;
+       }()))
+    for (size_t p = 0; p < planners.size(); ++p)
+      for (const Summary& s : summaries)
+        if (s.scene == scene && label(s) == planners[p]) {
+          const size_t ran = s.runs - s.notRun;
+          const double share = ran ? double(s.solved) / double(ran) : 0;
+          cs.push_back({scene,
+                        planners[p],
+                        seriesColour(p),
+                        {100 * share},
+                        std::to_string(s.solved) + "/" + std::to_string(ran)});
+        }
+  PlotSpec spec;
+  spec.title = "Runs solved";
+  spec.yLabel = "solved [%]";
+  spec.width = std::max(640.0, 220 + 28.0 * double(cs.size()));
+  spec.rules.push_back({100, ""});
+  return barChart(spec, cs);
 }
 
 std::string csvReport(const std::vector<RunRecord>& runs) {
@@ -284,8 +407,10 @@ std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunR
   for (const std::string& scene : scenes) {
     std::vector<std::pair<std::string, std::vector<const RunRecord*>>> planners;
     double total = 0, limit = 0, memory = 0;
+    double first = std::numeric_limits<double>::infinity();  // when its first run started
     for (const RunRecord& r : runs) {
       if (r.scene != scene || r.status == "not_run") continue;
+      if (r.startedAt > 0) first = std::min(first, r.startedAt);
       const std::string name = r.parameters.empty() ? r.planner : r.planner + " " + r.parameters;
       auto it = std::find_if(planners.begin(), planners.end(),
                              [&](const auto& p) { return p.first == name; });
@@ -298,8 +423,8 @@ std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunR
     std::ostringstream log;
     size_t maxRuns = 0;
     for (const auto& p : planners) maxRuns = std::max(maxRuns, p.second.size());
-    log << "MMS version 0.1.0\nExperiment " << scene << "\nRunning on " << host
-        << "\nStarting at unknown\n"
+    log << "MMS version " << version() << "\nExperiment " << scene << "\nRunning on " << host
+        << "\nStarting at " << dateText(first) << "\n"
         << "<<<|\nmms bench on scene " << scene << "\n|>>>\n<<<|\n|>>>\n"
         << "1 is the random seed\n"
         << limit << " seconds per run\n"

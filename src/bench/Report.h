@@ -58,8 +58,16 @@ std::string markdownReport(const std::vector<Summary>& summaries, const std::str
 /// Per scene: MMS and the portfolio "auto" (each the best of its configurations) against the
 /// best other planner by median,
 /// with the speed-up (a lower bound where that planner's median is past the time limit) and
-/// how many manifolds MMS built against those its path uses.
+/// how many manifolds MMS built against those its path uses; "" when either side did not run.
 std::string speedupReport(const std::vector<Summary>& summaries);
+/// Per scene, every planner ranked by median time (unsolved last), then by runs solved, with
+/// its time against the best one's.
+std::string rankingReport(const std::vector<Summary>& summaries);
+/// SVG box plot of the solved runs' times (log scale) per scene and planner, the unsolved runs
+/// counted under each box.
+std::string timesPlot(const std::vector<RunRecord>& runs);
+/// SVG bar chart of the share of runs solved per scene and planner.
+std::string successPlot(const std::vector<Summary>& summaries);
 std::string csvReport(const std::vector<RunRecord>& runs);
 /// One OMPL benchmark log per scene: scene name -> log text.
 std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunRecord>& runs,
@@ -67,6 +75,9 @@ std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunR
 /// SVG plot of mean planning time (log scale) against tightness with one-stdev error bars per
 /// planner; unsolved runs are drawn as such at the top.
 std::string tightnessPlot(const std::vector<Summary>& summaries, const std::string& title);
+
+/// "2026-11-27 07:30:00 UTC" for seconds since the epoch (a run's start); "unknown" for none.
+std::string dateText(double epochSeconds);
 
 std::vector<RunRecord> readRuns(const std::string& jsonlFile);
 

@@ -119,6 +119,30 @@ void checkParam(const std::string& planner, const std::string& args) {
   }
 }
 
+// "1 h 12 min", "3 min 20 s", "45 s".
+std::string duration(double seconds) {
+  const long s = long(std::ceil(seconds));
+  if (s >= 3600) return std::to_string(s / 3600) + " h " + std::to_string(s % 3600 / 60) + " min";
+  if (s >= 60) return std::to_string(s / 60) + " min " + std::to_string(s % 60) + " s";
+  return std::to_string(s) + " s";
+}
+
+// What is about to run, and how long it may take at most: a benchmark of many planners at a
+// long limit can take hours, which a user should know before starting it.
+void announce(const std::vector<Job>& jobs, size_t toRun, const BenchSettings& a) {
+  std::set<std::string> scenes, planners;
+  for (const Job& j : jobs)
+    scenes.insert(j.record.scene), planners.insert(j.record.planner + " " + j.record.parameters);
+  const size_t atOnce = std::max<size_t>(1, a.jobs);
+  const double worst = double(toRun) * a.timeLimit / double(atOnce);
+  std::fprintf(stderr,
+               "mms bench: %zu runs to make (%zu scene(s) x %zu planner(s) x %zu seed(s)%s): at "
+               "most %s at %s s each, %zu at a time; most end sooner, at their path\n",
+               toRun, scenes.size(), planners.size(), size_t(a.runs),
+               a.shardCount > 1 ? ", this shard's part" : "", duration(worst).c_str(),
+               formatNumber(a.timeLimit).c_str(), atOnce);
+}
+
 }  // namespace
 
 void writeBenchReports(const std::string& dir) {
@@ -161,9 +185,14 @@ void writeBenchReports(const std::string& dir) {
     for (std::string line; std::getline(commands, line);) md += line + "\n";
     md += "```\n";
   }
-  md += "\n## MMS and the portfolio against the best other planner\n\n" + speedupReport(summaries) +
-        "\n## All runs\n\n";
+  // MMS and the portfolio against the rest, where both kinds ran.
+  if (const std::string ours = speedupReport(summaries); !ours.empty())
+    md += "\n## MMS and the portfolio against the best other planner\n\n" + ours;
+  md += "\n## Every planner ranked\n\n" + rankingReport(summaries) +
+        "\n![time per run](times.svg)\n\n![runs solved](success.svg)\n\n## All runs\n\n";
   md += markdownReport(fixed, "");
+  writeFileAtomically(dir + "/times.svg", timesPlot(unique));
+  writeFileAtomically(dir + "/success.svg", successPlot(summaries));
   if (!swept.empty()) {
     md += "\n## Tightness sweep\n\n" + markdownReport(swept, "") +
           "\n![time vs tightness](tightness.svg)\n";
@@ -303,17 +332,14 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
   // A folder kept from an earlier build resumes silently otherwise: the version need not change
   // between builds, so say at once what is reused and when it was measured.
   if (reused > 0) {
-    std::string when;
-    std::tm utc{};
-    char buf[32];
-    const std::time_t t = newest > 0 && newest < 1e15 ? std::time_t(newest) : 0;  // not garbage
-    if (t > 0 && gmtime_r(&t, &utc) && std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", &utc))
-      when = std::string(", the newest started ") + buf;
+    const std::string date = dateText(newest);
+    const std::string when = date == "unknown" ? "" : ", the newest started " + date;
     std::fprintf(stderr,
                  "mms bench: resuming %s: %zu of %zu runs recorded already%s; give another "
                  "output folder to measure them again\n",
                  runsFile.c_str(), reused, jobs.size(), when.c_str());
   }
+  announce(jobs, jobs.size() - reused, a);
   if (!a.command.empty()) {
     std::ofstream log(a.output + "/commands.txt", std::ios::app);
     log << a.command << "\n";

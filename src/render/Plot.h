@@ -1,8 +1,9 @@
 #pragma once
-// Line plots as standalone SVG, for every plot mms writes (the lab's reports, the benchmark's
-// time-against-tightness plot): linear or log axes, markers or crosses, error bars, point
-// labels, dashed reference curves and lines, a legend. Points that a log axis cannot show (<= 0)
-// are left out.
+// Plots as standalone SVG, for every plot mms writes (the lab's reports, the benchmark's
+// time-against-tightness plot, its box plots and success charts): line plots with linear or
+// log axes, markers or crosses, error bars, point labels, dashed reference curves and lines, a
+// legend; box plots and bar charts of categories in groups. Values that a log axis cannot show
+// (<= 0) are left out.
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +32,21 @@ struct PlotSpec {
 };
 
 std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series);
+
+/// One category of a box plot or bar chart: drawn side by side with the others of its group
+/// (a scene), coloured and named in the legend by its label (a planner).
+struct Category {
+  std::string group, label, colour;
+  std::vector<double> values;  // a box plot's sample; a bar chart's one value
+  std::string note{};          // under it, e.g. "2/12 unsolved"
+};
+
+/// Boxes (quartiles, the median as a line, whiskers to the extremes, every value as a dot),
+/// groups side by side: the spread of times per planner and scene, as Planner Arena shows it.
+std::string boxPlot(const PlotSpec& spec, const std::vector<Category>& categories);
+
+/// Bars, one per category, groups side by side: e.g. the share of runs solved.
+std::string barChart(const PlotSpec& spec, const std::vector<Category>& categories);
 
 /// A colour per series index, readable on white and distinct for up to eight series.
 const char* seriesColour(size_t i);
