@@ -231,3 +231,28 @@ TEST(CliInput, APathEndingElsewhereIsToldWhereAndWhereTheGoalIs) {
   EXPECT_NE(r.out.find(", not at its goal ("), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("segment"), std::string::npos) << r.out;
 }
+
+// A mistyped name is answered with the one likely meant: options, planners, commands,
+// scenarios, a planner's parameters.
+TEST(CliInput, AMistypedNameGetsADidYouMean) {
+  const std::string scene = test::quote(test::scenario("one-robot/bar-slot.json"));
+  const struct {
+    std::string args, hint;
+  } cases[] = {
+      {"plan " + scene + " --timelimit 3", "did you mean '--time-limit'?"},
+      {"plan " + scene + " --planner rrtconect", "did you mean 'rrtconnect'?"},
+      {"plna " + scene, "'plna' is not a command; did you mean 'plan'?"},
+      {"scenario bendd -o x.json", "did you mean 'bend'?"},
+      {"bench " + scene + " --planners mms,rrtconect -o x", "did you mean 'rrtconnect'?"},
+      {"plan " + scene + " --planner mms --n-thetaa 3", "did you mean '--n-theta'?"},
+  };
+  for (const auto& c : cases) {
+    const test::Outcome r = run(c.args);
+    EXPECT_EQ(r.code, 2) << c.args;
+    EXPECT_NE(r.err.find(c.hint), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(lines(r.err), 1u) << r.err;
+  }
+  // Nothing near: no guess.
+  const test::Outcome far = run("plan " + scene + " --planner xyz");
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}

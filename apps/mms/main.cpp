@@ -15,20 +15,40 @@
 #include "util/CommandBoundary.h"
 #include "util/Interrupt.h"
 #include "util/MemoryLimit.h"
+#include "util/Suggest.h"
 
 namespace {
 
 // CLI11's "Failed parsing abc as a FLOAT" (and a range check's "Value abc not in range 1 to
-// 16" for text that is no number at all) in the wording of the scene readers' errors.
-std::string parseErrorLine(const CLI::ParseError& e) {
+// 16" for text that is no number at all) in the wording of the scene readers' errors; a name
+// that is none of those allowed (an option, a planner, a command) with the one likely meant.
+std::string parseErrorLine(const CLI::ParseError& e, const CLI::App& app,
+                           const std::vector<std::string>& args) {
   static const std::regex kConversion("Failed parsing (.*) as a (FLOAT|INT|UINT)");
   static const std::regex kRange("Value (.*) not in range .*");
+  static const std::regex kMember("(\\S+) not in \\{(.*)\\}");
+  static const std::regex kUnexpected("arguments? (was|were) not expected: (.*)");
   std::string line =
       std::regex_replace(mms::oneLine(e.what()), kConversion, "'$1' is not a number");
   std::smatch m;
   double value = 0;
   if (std::regex_search(line, m, kRange) && !CLI::detail::lexical_cast(m[1].str(), value))
     line = m.prefix().str() + "'" + m[1].str() + "' is not a number";
+  else if (std::regex_search(line, m, kMember))
+    line += mms::didYouMean(m[1].str(), mms::split(m[2].str(), ','));
+  else if (std::regex_search(line, m, kUnexpected)) {
+    std::vector<std::string> options;
+    for (const CLI::App* sub : app.get_subcommands({}))
+      for (const CLI::Option* o : sub->get_options())
+        for (const std::string& n : o->get_lnames()) options.push_back("--" + n);
+    for (const std::string& given : mms::split(m[2].str(), ' '))
+      if (given.rfind("--", 0) == 0) line += mms::didYouMean(given, options);
+  } else if (line.find("A subcommand is required") != std::string::npos && !args.empty() &&
+             args[0].rfind('-', 0) != 0) {
+    std::vector<std::string> commands;
+    for (const CLI::App* sub : app.get_subcommands({})) commands.push_back(sub->get_name());
+    line = "'" + args[0] + "' is not a command" + mms::didYouMean(args[0], commands);
+  }
   return line;
 }
 
@@ -419,7 +439,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "mms: " << parseErrorLine(e) << " (see mms --help)\n";
+    std::cerr << "mms: " << parseErrorLine(e, app, std::vector<std::string>(argv + 1, argv + argc))
+              << " (see mms --help)\n";
     return 2;
   }
 
@@ -474,7 +495,8 @@ int main(int argc, char** argv) {
           ba.planners.clear();
           for (const std::string& p : mms::split(plannersList, ',')) {
             if (std::find(plannerNames.begin(), plannerNames.end(), p) == plannerNames.end())
-              throw mms::InputError("--planners: unknown planner '" + p + "'");
+              throw mms::InputError("--planners: unknown planner '" + p + "'" +
+                                    mms::didYouMean(p, plannerNames));
             ba.planners.push_back(p);
           }
           if (ba.planners.empty()) throw mms::InputError("--planners: no planner given");

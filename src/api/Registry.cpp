@@ -4,6 +4,7 @@
 #include "api/Adapters.h"
 #include "mms/Errors.h"
 #include "util/Number.h"
+#include "util/Suggest.h"
 
 namespace mms {
 
@@ -69,8 +70,11 @@ std::unique_ptr<Planner> makePlanner(const std::string& name, const Scene& scene
   const PlannerInfo* info = findPlanner(name);
   if (!info) {
     std::string known;
-    for (const PlannerInfo& p : planners()) known += (known.empty() ? "" : ", ") + p.name;
-    throw InputError("--planner: unknown planner '" + name + "' (known: " + known + ")");
+    std::vector<std::string> names;
+    for (const PlannerInfo& p : planners())
+      known += (known.empty() ? "" : ", ") + p.name, names.push_back(p.name);
+    throw InputError("--planner: unknown planner '" + name + "' (known: " + known + ")" +
+                     didYouMean(name, names));
   }
   for (const auto& [given, value] : params.values) {
     const ParamSpec* spec = nullptr;
@@ -78,9 +82,12 @@ std::unique_ptr<Planner> makePlanner(const std::string& name, const Scene& scene
       if (s.name == given) spec = &s;
     if (!spec) {
       std::string known;
-      for (const ParamSpec& s : info->params) known += (known.empty() ? "--" : ", --") + s.name;
+      std::vector<std::string> names;
+      for (const ParamSpec& s : info->params)
+        known += (known.empty() ? "--" : ", --") + s.name, names.push_back(s.name);
       throw InputError("--" + given + ": not a parameter of planner " + name +
-                       (known.empty() ? " (it has none)" : " (its parameters: " + known + ")"));
+                       (known.empty() ? " (it has none)" : " (its parameters: " + known + ")") +
+                       didYouMean(given, names));
     }
     if (const std::string why = spec->problem(value); !why.empty())
       throw InputError("--" + given + ": " + why);

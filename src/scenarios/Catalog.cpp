@@ -8,6 +8,7 @@
 #include "scenarios/Generators.h"
 #include "scenarios/RandomScene.h"
 #include "util/Number.h"
+#include "util/Suggest.h"
 
 namespace mms {
 
@@ -94,7 +95,9 @@ Scene makeScenario(const ScenarioRequest& r, const std::string& prefix) {
     known = known || name == r.name;
     list += (list.empty() ? "" : ", ") + name;
   }
-  if (!known) throw InputError("scenario '" + r.name + "': unknown (known: " + list + ")");
+  if (!known)
+    throw InputError("scenario '" + r.name + "': unknown (known: " + list + ")" +
+                     didYouMean(r.name, scenarioNames()));
   requireRange(prefix, "tightness", r.tightness, 0, 0.999);
   requireRange(prefix, "slack", r.slack, 0.001, 1);
   if (r.robots != 0) requireRange(prefix, "robots", r.robots, 1, 16);
