@@ -141,22 +141,67 @@ int report(const PlanArgs& a, const Scene& scene, const std::string& label, cons
 
 }  // namespace
 
-int plan(const PlanArgs& a) {
-  for (const auto& [path, option] :
-       {std::pair{a.output, "-o"}, {a.svg, "--svg"}, {a.statsJson, "--stats-json"}})
-    checkWritable(path, option);
-  const Scene scene = readScene(a.scene, a.quiet);
+namespace {
+
+// Progress on stderr while one query runs: the planner's own reports once a second has passed
+// and, since a planner reports between manifolds and one manifold among thousands of obstacles
+// takes longer than a user waits in silence, a line every 5 s between them that says it works.
+class ProgressLines {
+ public:
+  ProgressLines(bool quiet, double timeLimit) : quiet_(quiet) {
+    if (quiet) return;
+    heartbeat_ = std::thread([this, timeLimit] {
+      std::unique_lock lock(m_);
+      while (!wake_.wait_for(lock, std::chrono::seconds(1), [&] { return finished_; }))
+        if (clock_.seconds() - lastReport_ >= 5)
+          std::fprintf(stderr,
+                       "mms plan: %.1f s, still working (building manifolds; %.0f s left)\n",
+                       clock_.seconds(), std::max(0.0, timeLimit - processClock().seconds())),
+              lastReport_ = clock_.seconds();
+    });
+  }
+  ~ProgressLines() {
+    if (!heartbeat_.joinable()) return;
+    {
+      std::lock_guard lock(m_);
+      finished_ = true;
+    }
+    wake_.notify_all();
+    heartbeat_.join();
+  }
+  Planner::Progress callback() {
+    return [this](const PlanStatistics& s) {
+      if (quiet_ || clock_.seconds() < 1.0) return;
+      const std::string round = s.rounds ? ", round " + std::to_string(s.rounds) : "";
+      std::fprintf(stderr, "mms plan: %.1f s%s: %s, graph %zu nodes / %zu edges\n",
+                   clock_.seconds(), round.c_str(), countsText(s).c_str(), s.graphNodes,
+                   s.graphEdges);
+      lastReport_ = clock_.seconds();
+    };
+  }
+
+ private:
+  bool quiet_;
+  Stopwatch clock_;
+  std::atomic<double> lastReport_{0};
+  std::mutex m_;
+  std::condition_variable wake_;
+  bool finished_ = false;
+  std::thread heartbeat_;
+};
+
+// The queries to answer: the scene's own, or those of --queries (one-robot MMS only, as is the
+// roadmap's picture in the path file).
+std::vector<Query> queriesOf(const PlanArgs& a, const Scene& scene) {
   const PlannerInfo* info = findPlanner(a.planner);
   if (!info) throw InputError("--planner: unknown planner '" + a.planner + "'");
-  // The roadmap's cells and several queries on one roadmap: one-robot MMS only.
   const bool oneRoadmap = info->multiQuery && scene.robots.size() == 1;
   const std::string why =
       a.scene + " has " + std::to_string(scene.robots.size()) + " robots, planner " + a.planner;
   if (!a.queries.empty() && !oneRoadmap)
     throw InputError(a.queries +
-                     ": (file): --queries is for one-robot scenes with the mms "
-                     "planner (" +
-                     why + ")");
+                     ": (file): --queries is for one-robot scenes with the mms planner (" + why +
+                     ")");
   if (a.saveRoadmap && !oneRoadmap)
     throw InputError(a.scene + ": (--save-roadmap): one-robot scenes with the mms planner only (" +
                      why + ")");
@@ -167,7 +212,17 @@ int plan(const PlanArgs& a) {
       if (path == kStandardOutput)
         throw InputError(a.queries + ": (" + option +
                          "): several queries write a file each, not one to standard output");
+  return queries;
+}
 
+}  // namespace
+
+int plan(const PlanArgs& a) {
+  for (const auto& [path, option] :
+       {std::pair{a.output, "-o"}, {a.svg, "--svg"}, {a.statsJson, "--stats-json"}})
+    checkWritable(path, option);
+  const Scene scene = readScene(a.scene, a.quiet);
+  const std::vector<Query> queries = queriesOf(a, scene);
   PlannerParams params = a.params;
   params.seed = a.seed;
   params.roadmapPicture = a.saveRoadmap || a.svgRoadmap;
@@ -186,52 +241,15 @@ int plan(const PlanArgs& a) {
       planner->setQuery(startConfig(queryScene), goalConfig(queryScene));
       label = a.queries + " query " + std::to_string(qi);
     }
-    Stopwatch clock;
-    std::atomic<double> lastReport{0};
-    auto progress = [&](const PlanStatistics& s) {
-      if (a.quiet || clock.seconds() < 1.0) return;
-      const std::string round = s.rounds ? ", round " + std::to_string(s.rounds) : "";
-      std::fprintf(stderr, "mms plan: %.1f s%s: %s, graph %zu nodes / %zu edges\n", clock.seconds(),
-                   round.c_str(), countsText(s).c_str(), s.graphNodes, s.graphEdges);
-      lastReport = clock.seconds();
-    };
-    // A planner reports between manifolds; one manifold among thousands of obstacles takes
-    // longer than a user waits in silence. Between its reports, a line every 5 s says it works.
-    std::mutex m;
-    std::condition_variable wake;
-    bool finished = false;
-    std::thread heartbeat;
-    if (!a.quiet)
-      heartbeat = std::thread([&] {
-        std::unique_lock lock(m);
-        while (!wake.wait_for(lock, std::chrono::seconds(1), [&] { return finished; }))
-          if (clock.seconds() - lastReport >= 5)
-            std::fprintf(stderr,
-                         "mms plan: %.1f s, still working (building manifolds; %.0f s left)\n",
-                         clock.seconds(), std::max(0.0, a.timeLimit - processClock().seconds())),
-                lastReport = clock.seconds();
-      });
-    auto stopHeartbeat = [&] {
-      if (!heartbeat.joinable()) return;
-      {
-        std::lock_guard lock(m);
-        finished = true;
-      }
-      wake.notify_all();
-      heartbeat.join();
-    };
     // The limit holds for the whole command: what reading the scene and making the planner
     // took (a thousand obstacles: tens of ms) comes off the first query's time.
     const double limit =
         qi == 0 ? std::max(0.0, a.timeLimit - processClock().seconds()) : a.timeLimit;
     PlanResult r;
-    try {
-      r = planner->solve(Termination(limit, sigintFlag()), progress);
-    } catch (...) {
-      stopHeartbeat();
-      throw;
+    {
+      ProgressLines lines(a.quiet, a.timeLimit);
+      r = planner->solve(Termination(limit, sigintFlag()), lines.callback());
     }
-    stopHeartbeat();
     if (interruptRequested()) throw Interrupted();
     summaries.push_back(toJson(summarize(a.scene, a.planner, a.seed, a.timeLimit, r)));
     const bool many = queries.size() > 1;

@@ -1,0 +1,574 @@
+// The command line's subcommands: each registers its options on the app and says what runs
+// when it is the one given (one function per subcommand).
+#include "Cli.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <regex>
+
+#include "Commands.h"
+#include "mms/Errors.h"
+#include "mms/Planner.h"
+#include "mms/mms.h"
+#include "util/AtomicFile.h"
+#include "util/CommandBoundary.h"
+#include "util/Interrupt.h"
+#include "util/MemoryLimit.h"
+#include "util/Suggest.h"
+
+namespace mms::cli {
+
+namespace {
+
+// CLI11's "Failed parsing abc as a FLOAT" (and a range check's "Value abc not in range 1 to
+// 16" for text that is no number at all) in the wording of the scene readers' errors; a name
+// that is none of those allowed (an option, a planner, a command) with the one likely meant.
+}  // namespace
+
+std::string parseErrorLine(const CLI::ParseError& e, const CLI::App& app,
+                           const std::vector<std::string>& args) {
+  static const std::regex kConversion("Failed parsing (.*) as a (FLOAT|INT|UINT)");
+  static const std::regex kRange("Value (.*) not in range .*");
+  static const std::regex kMember("(\\S+) not in \\{(.*)\\}");
+  static const std::regex kUnexpected("arguments? (was|were) not expected: (.*)");
+  std::string line =
+      std::regex_replace(mms::oneLine(e.what()), kConversion, "'$1' is not a number");
+  std::smatch m;
+  double value = 0;
+  if (std::regex_search(line, m, kRange) && !CLI::detail::lexical_cast(m[1].str(), value))
+    line = m.prefix().str() + "'" + m[1].str() + "' is not a number";
+  else if (std::regex_search(line, m, kMember))
+    line += mms::didYouMean(m[1].str(), mms::split(m[2].str(), ','));
+  else if (std::regex_search(line, m, kUnexpected)) {
+    std::vector<std::string> options;
+    for (const CLI::App* sub : app.get_subcommands({}))
+      for (const CLI::Option* o : sub->get_options())
+        for (const std::string& n : o->get_lnames()) options.push_back("--" + n);
+    for (const std::string& given : mms::split(m[2].str(), ' '))
+      if (given.rfind("--", 0) == 0) line += mms::didYouMean(given, options);
+  } else if (line.find("A subcommand is required") != std::string::npos && !args.empty() &&
+             args[0].rfind('-', 0) != 0) {
+    std::vector<std::string> commands;
+    for (const CLI::App* sub : app.get_subcommands({})) commands.push_back(sub->get_name());
+    line = "'" + args[0] + "' is not a command" + mms::didYouMean(args[0], commands);
+  }
+  return line;
+}
+
+namespace {
+
+// --memory-limit: 0 (none) or a cap; one too small for the program itself ends as any other
+// run out of memory does.
+const CLI::Validator memoryLimitMb(
+    [](std::string& v) -> std::string {
+      double mb = -1;
+      if (!CLI::detail::lexical_cast(v, mb)) return "not a number: " + v;
+      return mb == 0 || (mb >= 1 && mb <= 1e7) ? "" : "must be 0 (no limit) or 1 to 1e7 MB";
+    },
+    "0|1..1e7");
+
+// Every planner's parameters, once per name (planners share some), with the planners that
+// take each.
+std::vector<std::pair<mms::ParamSpec, std::vector<std::string>>> declaredParams() {
+  std::vector<std::pair<mms::ParamSpec, std::vector<std::string>>> out;
+  for (const mms::PlannerInfo& p : mms::planners())
+    for (const mms::ParamSpec& spec : p.params) {
+      auto it = std::find_if(out.begin(), out.end(),
+                             [&](const auto& e) { return e.first.name == spec.name; });
+      if (it == out.end()) it = out.insert(out.end(), {spec, {}});
+      it->second.push_back(p.name);
+    }
+  return out;
+}
+
+std::string typeName(const mms::ParamSpec& spec) {
+  if (!spec.choices.empty()) {
+    std::string names;
+    for (const std::string& c : spec.choices) names += (names.empty() ? "" : "|") + c;
+    return names;
+  }
+  return (spec.type == mms::ParamSpec::Type::Integer ? "INT in [" : "FLOAT in [") +
+         mms::formatNumber(spec.min) + ", " + mms::formatNumber(spec.max) + "]";
+}
+
+CLI::Option* sceneArg(CLI::App* cmd, std::string& v, const std::string& help) {
+  return cmd->add_option("SCENE", v, help)->required();
+}
+CLI::Option* outputOption(CLI::App* cmd, std::string& v, const std::string& help) {
+  return cmd->add_option("-o,--output", v, help)->required();
+}
+CLI::Option* quietFlag(CLI::App* cmd, bool& v, const std::string& help) {
+  return cmd->add_flag("-q,--quiet", v, help);
+}
+CLI::Option* memoryLimitOption(CLI::App* cmd, double& v, const std::string& help) {
+  return cmd->add_option("--memory-limit", v, help)->capture_default_str()->check(memoryLimitMb);
+}
+CLI::Option* seedOption(CLI::App* cmd, uint64_t& v, const std::string& help) {
+  // A negative seed would wrap round to a huge one silently.
+  const CLI::Validator wholeNumber(
+      [](std::string& s) {
+        return s.find_first_not_of("0123456789") == std::string::npos && !s.empty()
+                   ? std::string()
+                   : "'" + s + "' is not a whole number from 0 up";
+      },
+      "UINT");
+  return cmd->add_option("--seed", v, help)->capture_default_str()->check(wholeNumber);
+}
+
+// "-" for a file sends it to standard output and the command's report to standard error; at
+// most one file can go there, and a folder never does.
+void claimStandardOutput(const std::vector<std::pair<std::string, const char*>>& files,
+                         const std::vector<std::pair<std::string, const char*>>& folders = {}) {
+  for (const auto& [value, option] : folders)
+    if (value == mms::kStandardOutput)
+      throw mms::InputError(std::string("-: (") + option +
+                            "): a folder is needed here, not standard output");
+  const char* first = nullptr;
+  for (const auto& [value, option] : files) {
+    if (value != mms::kStandardOutput) continue;
+    if (first)
+      throw mms::InputError(std::string("-: (") + option + "): " + first +
+                            " already writes to standard output");
+    first = option;
+  }
+  if (first) mms::keepStandardOutputForData();
+}
+
+std::vector<std::string> plannerNames() {
+  std::vector<std::string> names;
+  for (const mms::PlannerInfo& p : mms::planners()) names.push_back(p.name);
+  return names;
+}
+
+// Plans and assemblies: Ctrl-C ends them cleanly from here on, and the memory cap holds.
+void startLongRun(double memoryMb) {
+  mms::sigintFlag();
+  if (!mms::limitMemory(memoryMb))
+    throw mms::InputError("mms: --memory-limit: the system refused the limit");
+}
+
+// The options that need checking beyond CLI11's before a benchmark starts.
+struct BenchOptions : BenchArgs {
+  // By default the portfolio, MMS and the four OMPL planners the benchmarks compare against (all
+  // fourteen at 12 runs of 60 s would take up to 2.8 h per scene).
+  std::string planners = "auto,mms,prm,prm-bridge,rrtconnect,kpiece";
+  std::string shard = "1/1";
+};
+
+}  // namespace
+
+// Every planner's declared parameters, each one option of mms plan; which planner takes which
+// is checked once the planner is known (mms::makePlanner).
+class PlannerParamOptions {
+ public:
+  explicit PlannerParamOptions(CLI::App* cmd) {
+    const size_t omplPlanners = mms::planners().size() - 2;  // all but auto and mms
+    for (const auto& [spec, users] : declaredParams()) {
+      std::string help = spec.help, list;
+      for (const std::string& u : users) list += (list.empty() ? "" : ", ") + u;
+      if (users.size() == omplPlanners && users.front() != "auto") list = "every OMPL planner";
+      if (users.size() < mms::planners().size()) help += " [" + list + "]";
+      CLI::Option* o = spec.type == mms::ParamSpec::Type::Flag
+                           ? cmd->add_flag("--" + spec.name, flag_[spec.name], help)
+                           : cmd->add_option("--" + spec.name, text_[spec.name], help)
+                                 ->type_name(typeName(spec));
+      options_.emplace_back(spec, o);
+    }
+  }
+  /// The parameters given, by name; throws InputError for a value out of its range.
+  std::map<std::string, double> given() const {
+    std::map<std::string, double> values;
+    for (const auto& [spec, option] : options_) {
+      if (option->count() == 0) continue;
+      double v = 1;  // a flag given
+      if (spec.type != mms::ParamSpec::Type::Flag)
+        if (const std::string why = spec.parse(text_.at(spec.name), v); !why.empty())
+          throw mms::InputError("mms: --" + spec.name + ": " + why + " (see mms --help)");
+      values[spec.name] = v;
+    }
+    return values;
+  }
+
+ private:
+  std::map<std::string, std::string> text_;
+  std::map<std::string, bool> flag_;
+  std::vector<std::pair<mms::ParamSpec, CLI::Option*>> options_;
+};
+
+Command addPlan(CLI::App& app) {
+  auto args = std::make_shared<PlanArgs>();
+  PlanArgs& pa = *args;
+  auto* planCmd = app.add_subcommand(
+      "plan",
+      "Plan a certified motion with MMS (manifold samples: fixed-angle slices, fixed-position\n"
+      "lines). Exit 0 path found and certified, 1 no path within the time limit, 2 bad input");
+  sceneArg(planCmd, pa.scene, "Scene file");
+  planCmd->add_option("-o,--output", pa.output,
+                      "Write the path (mms-path/1) here (-: standard output)");
+  planCmd->add_option("--svg", pa.svg,
+                      "Write an animated SVG of the scene and path here (-: standard output)");
+  seedOption(planCmd, pa.seed, "Random seed (same seed, same path)");
+  planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
+      ->capture_default_str()
+      ->check(CLI::Number)
+      ->check(CLI::Range(0.01, 1e6));
+  memoryLimitOption(planCmd, pa.memoryMb,
+                    "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
+  quietFlag(planCmd, pa.quiet, "No progress messages on stderr");
+  std::string plannerHelp = std::string("The planner (default ") + mms::kDefaultPlanner + "):";
+  for (const mms::PlannerInfo& p : mms::planners())
+    plannerHelp += "\n  " + p.name + ": " + p.summary;
+  planCmd->add_option("--planner", pa.planner, plannerHelp)->check(CLI::IsMember(plannerNames()));
+  auto params = std::make_shared<PlannerParamOptions>(planCmd);
+  planCmd->add_option(
+      "--stats-json", pa.statsJson,
+      "Write a JSON summary of the run (status, times, sizes) here (-: standard output)");
+  planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
+                    "In the SVG, also draw the lines' points and the free-space cells of the "
+                    "slices the path uses (one robot: auto then runs MMS alone)");
+  planCmd->add_flag("--save-roadmap", pa.saveRoadmap,
+                    "One robot: keep the free-space cells the path uses and the lines' points in "
+                    "the path file, for mms view (auto then runs MMS alone)");
+  planCmd->add_option(
+      "--queries", pa.queries,
+      "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "
+      "\"queries\": [{\"start\": [x,y,theta], \"goal\": [x,y,theta]}, ...]}; with -o/--svg, "
+      "files are numbered (out.0.json, ...)");
+  return {planCmd, [args, params] {
+            claimStandardOutput(
+                {{args->output, "-o"}, {args->svg, "--svg"}, {args->statsJson, "--stats-json"}});
+            startLongRun(args->memoryMb);
+            args->params.values = params->given();
+            return plan(*args);
+          }};
+}
+
+Command addValidate(CLI::App& app) {
+  auto args = std::make_shared<ValidateArgs>();
+  ValidateArgs& va = *args;
+  auto* validateCmd =
+      app.add_subcommand("validate", "Load and validate a scene (mms-scene/1); print a summary");
+  sceneArg(validateCmd, va.scene, "Scene file");
+  quietFlag(validateCmd, va.quiet, "Print nothing when valid");
+  return {validateCmd, [args] { return validate(*args); }};
+}
+
+Command addCheck(CLI::App& app) {
+  auto args = std::make_shared<CheckArgs>();
+  CheckArgs& ca = *args;
+  auto* checkCmd = app.add_subcommand(
+      "check",
+      "Certify a path (mms-path/1) as a continuous collision-free motion from start to goal.\n"
+      "Exit 0 certified, 1 rejected (first failing segment, parameter and reason), 2 bad input");
+  sceneArg(checkCmd, ca.scene, "Scene file");
+  checkCmd->add_option("PATH", ca.path, "Path file")->required();
+  checkCmd
+      ->add_option("--max-evaluations", ca.maxEvaluations,
+                   "Poses the checker may evaluate before giving up")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  return {checkCmd, [args] { return check(*args); }};
+}
+
+Command addRender(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  RenderArgs& ra = *args;
+  auto* renderCmd = app.add_subcommand(
+      "render", "Draw a scene (and a path, animated) as SVG: start poses green, goal poses red");
+  sceneArg(renderCmd, ra.scene, "Scene file");
+  renderCmd->add_option("PATH", ra.path, "Path file to draw and animate");
+  outputOption(renderCmd, ra.output, "SVG file to write (-: standard output)");
+  renderCmd->add_option("--width", ra.width, "Picture width in pixels")
+      ->capture_default_str()
+      ->check(CLI::Range(50.0, 20000.0));
+  renderCmd->add_option("--ghosts", ra.ghosts, "Faint robot poses drawn along the path")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+  renderCmd->add_flag("--no-animation", ra.noAnimation, "Leave out the animated robot");
+  return {renderCmd, [args] {
+            claimStandardOutput({{args->output, "-o"}});
+            return render(*args);
+          }};
+}
+
+Command addView(CLI::App& app) {
+  auto args = std::make_shared<ViewArgs>();
+  ViewArgs& wa = *args;
+  auto* viewCmd = app.add_subcommand(
+      "view",
+      "Write one self-contained HTML file that draws the scene and plays the path (play/pause,\n"
+      "time slider, speed, traces, the planner's cells with --save-roadmap paths). Open it in\n"
+      "any browser; FILE.html#t=0.5 opens it half-way through the motion");
+  sceneArg(viewCmd, wa.scene, "Scene file (any format mms reads)");
+  viewCmd->add_option("PATH", wa.path, "Path file to play");
+  outputOption(viewCmd, wa.output, "HTML file to write (-: standard output)");
+  return {viewCmd, [args] {
+            claimStandardOutput({{args->output, "-o"}});
+            return view(*args);
+          }};
+}
+
+Command addImport(CLI::App& app) {
+  auto args = std::make_shared<ImportArgs>();
+  ImportArgs& ia = *args;
+  auto* importCmd = app.add_subcommand(
+      "import",
+      "Convert a scene to mms-scene/1: an OMPL.app problem (FILE.cfg and the COLLADA meshes it\n"
+      "names) or a discopygal JSON scene. Notes on stderr say what the conversion changed.\n"
+      "(plan, validate, check, render and view read these files directly too)");
+  importCmd->add_option("FILE", ia.input, "OMPL.app .cfg or discopygal .json")->required();
+  outputOption(importCmd, ia.output, "Scene file to write (-: standard output)");
+  quietFlag(importCmd, ia.quiet, "Print nothing on success");
+  importCmd->add_option("--bounds", ia.bounds,
+                        "XMIN,YMIN,XMAX,YMAX: the workspace, instead of the one the file gives "
+                        "(discopygal scenes give none: by default the box around obstacles and "
+                        "robots, grown by 5 %)");
+  return {importCmd, [args] {
+            claimStandardOutput({{args->output, "-o"}});
+            return importScene(*args);
+          }};
+}
+
+Command addExport(CLI::App& app) {
+  auto args = std::make_shared<ExportArgs>();
+  ExportArgs& ea = *args;
+  auto* exportCmd = app.add_subcommand(
+      "export",
+      "Write a scene as discopygal JSON (--to discopygal), or a path as OMPL.app's .path text\n"
+      "(--to ompl-path, one rigid robot)");
+  sceneArg(exportCmd, ea.scene, "Scene file");
+  exportCmd->add_option("PATH", ea.path, "Path file (for --to ompl-path)");
+  exportCmd->add_option("--to", ea.to, "discopygal or ompl-path")
+      ->required()
+      ->check(CLI::IsMember({"discopygal", "ompl-path"}));
+  outputOption(exportCmd, ea.output, "File to write (-: standard output)");
+  quietFlag(exportCmd, ea.quiet, "Print nothing on success");
+  return {exportCmd, [args] {
+            claimStandardOutput({{args->output, "-o"}});
+            return exportScene(*args);
+          }};
+}
+
+Command addLab(CLI::App& app) {
+  auto args = std::make_shared<LabArgs>();
+  LabArgs& la = *args;
+  auto* labCmd = app.add_subcommand(
+      "lab",
+      "Measure the paper's theory (docs/theory.md): 'completeness' (failure rate of MMS and PRM\n"
+      "against samples in R^2..R^6, Theorem 3.3) or 'passages' (flume vs tunnel, k-clearance,\n"
+      "the Pacman's passage). Writes SVG plots, CSV and a Markdown summary");
+  labCmd->add_option("EXPERIMENT", la.experiment, "completeness or passages")
+      ->required()
+      ->check(CLI::IsMember({"completeness", "passages"}));
+  labCmd->add_option("-o,--output", la.output, "Folder for the report (created if missing)")
+      ->capture_default_str();
+  seedOption(labCmd, la.seed, "Random seed (same seed, same report)");
+  labCmd->add_option("--trials", la.trials, "Trials per setting (0: the experiment's default)")
+      ->check(CLI::Range(0, 1000000));
+  labCmd->add_option("--threads", la.threads, "Threads for trials (0: all cores)")
+      ->capture_default_str()
+      ->check(CLI::Range(0u, 256u));
+  labCmd->add_flag("--quick", la.quick, "Small settings: a smoke run in seconds");
+  labCmd->add_flag("--no-pacman", la.noPacman, "passages: leave out the Pacman proxy");
+  quietFlag(labCmd, la.quiet, "No progress messages");
+  // Ctrl-C keeps its default (the lab writes its files only at the end, atomically).
+  return {labCmd, [args] {
+            claimStandardOutput({}, {{args->output, "-o"}});
+            return lab(*args);
+          }};
+}
+
+Command addAssemble(CLI::App& app) {
+  auto args = std::make_shared<AssembleArgs>();
+  AssembleArgs& aa = *args;
+  auto* assembleCmd = app.add_subcommand(
+      "assemble",
+      "Three-handed disassembly: remove every part (robot) from the static part (the obstacles),\n"
+      "one part or two at a time while the others stay put. Parts whose goal equals their start\n"
+      "leave the obstacles' bounding box; the others go to their goals. Writes "
+      "DIR/step-K.scene.json\n"
+      "and step-K.path.json per step, DIR/disassembly.{scene,path}.json (the whole motion, "
+      "certified)\n"
+      "and DIR/disassembly.json (the sequence). Exit 1 when parts remain stuck.");
+  sceneArg(assembleCmd, aa.scene, "Scene file (mms-scene/1)");
+  outputOption(assembleCmd, aa.output, "Directory for the files");
+  assembleCmd->add_option("--svg", aa.svg,
+                          "Write an animated SVG of the whole disassembly (-: standard output)");
+  seedOption(assembleCmd, aa.seed, "Random seed");
+  assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
+      ->capture_default_str()
+      ->check(CLI::Number)
+      ->check(CLI::Range(0.01, 1e7));
+  memoryLimitOption(assembleCmd, aa.memoryMb,
+                    "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
+  assembleCmd->add_flag("--no-pairs", aa.noPairs,
+                        "Two hands only: move one part at a time (exact for translating parts)");
+  quietFlag(assembleCmd, aa.quiet, "No progress messages on stderr");
+  return {assembleCmd, [args] {
+            claimStandardOutput({{args->svg, "--svg"}}, {{args->output, "-o"}});
+            startLongRun(args->memoryMb);
+            return assemble(*args);
+          }};
+}
+
+Command addScenario(CLI::App& app) {
+  auto args = std::make_shared<ScenarioArgs>();
+  ScenarioArgs& sa = *args;
+  auto* scenarioCmd = app.add_subcommand(
+      "scenario",
+      "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
+      "random-polygons (--seed), assembly-1 and assembly-2 (--slack), a random test scene "
+      "(random: --seed, --robots, --obstacles), carry-turn (--seed: a gripper and the part it "
+      "holds turn together in a tight chamber), niche-swap (--seed: two robots swap the ends "
+      "of a corridor with a niche), niche-three (--seed: two robots cross a corridor in which a "
+      "third must wait in a niche), discs-swap (--seed: 4-5 discs round a block to each "
+      "other's places), discs-room (--seed, --robots: discs cross an open room among "
+      "obstacles), open-clutter (--seed: one or two L-shaped robots cross random "
+      "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor) or doors "
+      "(--seed: a long robot lines up with the doors of 1-3 thin walls)");
+  scenarioCmd
+      ->add_option(
+          "NAME", sa.name,
+          "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
+          "carry-turn, niche-swap, niche-three, discs-swap, discs-room, open-clutter, bend or "
+          "doors")
+      ->required()
+      ->check(CLI::IsMember(mms::scenarioNames()));
+  outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");
+  scenarioCmd
+      ->add_option("--tightness", sa.tightness,
+                   "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.999));
+  seedOption(scenarioCmd, sa.seed,
+             "random-polygons, random and the generated families: the seed of the geometry");
+  scenarioCmd
+      ->add_option("--robots", sa.robots,
+                   "random: 1 or 2 robots (default: from the seed); discs-room: how many discs "
+                   "(default 10, at most 16)")
+      ->check(CLI::Range(1, 16));
+  scenarioCmd
+      ->add_option("--obstacles", sa.obstacles,
+                   "random: how many obstacles (default: from the seed)")
+      ->check(CLI::Range(0, 100000));
+  auto* slackOption =
+      scenarioCmd
+          ->add_option("--slack", sa.slack,
+                       "assembly-1/2: the play between parts and walls, at most 0.15 (the "
+                       "smaller, the tighter); niche-swap: the niche's play around a robot, a "
+                       "share of its size (default: 0.04-0.1 from the seed; 0.5 is roomy)")
+          ->capture_default_str()
+          ->check(CLI::Range(0.001, 1.0));
+  scenarioCmd
+      ->add_option("--translate", sa.translate,
+                   "robots (by name, comma-separated) that only translate, e.g. niche-three's "
+                   "oncoming; each must keep its angle from start to goal")
+      ->delimiter(',');
+  scenarioCmd->add_flag("--m-parts-only", sa.mPartsOnly,
+                        "assembly-2: only the two M parts, with goals outside (the 4-D problem "
+                        "left once the triangles are out)");
+  return {scenarioCmd, [args, slackOption] {
+            claimStandardOutput({{args->output, "-o"}});
+            args->slackGiven = slackOption->count() > 0;
+            return scenario(*args);
+          }};
+}
+
+Command addMerge(CLI::App& app) {
+  auto args = std::make_shared<std::pair<std::vector<std::string>, std::string>>();
+  auto* mergeCmd =
+      app.add_subcommand("bench-merge",
+                         "Merge the runs of several mms bench folders (shards) into one, "
+                         "with reports");
+  mergeCmd->add_option("DIRS", args->first, "Benchmark folders")->required();
+  outputOption(mergeCmd, args->second, "Merged folder");
+  return {mergeCmd, [args] {
+            claimStandardOutput({}, {{args->second, "-o"}});
+            return benchMerge(args->first, args->second);
+          }};
+}
+
+// The benchmark's settings from its options: the command that ran it (quoted where a shell
+// would split it, so that the logged command runs again), the planners and the shard checked.
+BenchArgs benchSettings(const BenchOptions& o, const std::vector<std::string>& argv) {
+  BenchArgs b = o;
+  for (const std::string& arg : argv) {
+    const bool plain = !arg.empty() && arg.find_first_of(" \t'\"$\\") == std::string::npos;
+    if (!b.command.empty()) b.command += ' ';
+    b.command += plain ? arg : "'" + arg + "'";
+  }
+  const std::vector<std::string> names = plannerNames();
+  b.planners.clear();
+  for (const std::string& p : mms::split(o.planners, ',')) {
+    if (std::find(names.begin(), names.end(), p) == names.end())
+      throw mms::InputError("--planners: unknown planner '" + p + "'" + mms::didYouMean(p, names));
+    b.planners.push_back(p);
+  }
+  if (b.planners.empty()) throw mms::InputError("--planners: no planner given");
+  unsigned k = 0, n = 0;
+  char extra = 0;
+  if (std::sscanf(o.shard.c_str(), "%u/%u%c", &k, &n, &extra) != 2 || n == 0 || k == 0 || k > n)
+    throw mms::InputError("--shard: expected K/N with 1 <= K <= N, found '" + o.shard + "'");
+  b.shardIndex = k;
+  b.shardCount = n;
+  return b;
+}
+
+Command addBench(CLI::App& app, const std::vector<std::string>& argv) {
+  auto args = std::make_shared<BenchOptions>();
+  BenchArgs& ba = *args;
+  // By default the portfolio, MMS and the four OMPL planners the benchmarks compare against (all
+  // fourteen at 12 runs of 60 s would take up to 2.8 h per scene).
+  auto* benchCmd = app.add_subcommand("bench",
+                                      "Run planners on scenes, N seeds each, every run in its own "
+                                      "process under a time and memory limit.\n"
+                                      "Writes DIR/runs.jsonl as runs finish (rerun to resume), "
+                                      "then DIR/report.md (Markdown table),\n"
+                                      "DIR/results.csv, DIR/ompl/*.log (for "
+                                      "ompl_benchmark_statistics / Planner Arena) and, with a\n"
+                                      "sweep, DIR/tightness.svg");
+  benchCmd->add_option("SCENES", ba.scenes, "Scene files")->check(CLI::ExistingFile);
+  outputOption(benchCmd, ba.output, "Results folder");
+  benchCmd
+      ->add_option("--planners", args->planners,
+                   "Comma-separated planners (see mms plan --help for every name)")
+      ->capture_default_str();
+  benchCmd->add_option("--runs", ba.runs, "Runs per scene and planner (seeds 1..N)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")
+      ->capture_default_str()
+      ->check(CLI::Number)
+      ->check(CLI::Range(0.01, 1e6));
+  memoryLimitOption(benchCmd, ba.memoryMb, "MB of address space per run (0: none)");
+  benchCmd->add_option(
+      "--sweep-pacman", ba.sweepPacman,
+      "Comma-separated Pacman tightness values to add as generated scenes, e.g. 0,0.5,0.9");
+  benchCmd->add_option(
+      "--param", ba.params,
+      "Extra mms plan options for one planner, e.g. --param \"prm=--k 10\" (repeatable)");
+  benchCmd
+      ->add_option(
+          "--shard", args->shard,
+          "K/N: run only the K-th of N disjoint parts of the run list (merge with mms bench-merge)")
+      ->capture_default_str();
+  benchCmd
+      ->add_option("--jobs", ba.jobs,
+                   "Cores to fill: runs at a time, an mms run with --threads N taking N of them "
+                   "(timings are noisier above 1)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  benchCmd->add_flag("--stop-decided", ba.stopDecided,
+                     "Stop running a planner's seeds on a scene once half of them failed (its "
+                     "median is then decided as unsolved); the rest are recorded as not run");
+  benchCmd->add_flag("--report-only", ba.reportOnly,
+                     "Only rewrite the reports from the runs recorded in DIR");
+  return {benchCmd, [args, argv] {
+            claimStandardOutput({}, {{args->output, "-o"}});
+            return bench(benchSettings(*args, argv));
+          }};
+}
+
+}  // namespace mms::cli
