@@ -216,13 +216,15 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return out;
 }
 
-BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cancel) {
-  fs::create_directories(a.output);
-  // Scenes: the files given, plus generated Pacman scenes for a tightness sweep.
-  struct SceneEntry {
-    std::string file, name;
-    double tightness;
-  };
+namespace {
+
+struct SceneEntry {
+  std::string file, name;
+  double tightness;  // a swept Pacman's; -1 for a scene file
+};
+
+// Scenes: the files given, plus generated Pacman scenes for a tightness sweep.
+std::vector<SceneEntry> benchScenes(const BenchSettings& a) {
   std::vector<SceneEntry> scenes;
   for (const std::string& f : a.scenes) {
     ImportNotes notes;
@@ -248,8 +250,12 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
   for (SceneEntry& s : scenes)
     if (s.name.empty()) s.name = fs::path(s.file).stem().string();
   if (scenes.empty()) throw InputError("mms bench: no scenes (give scene files or --sweep-pacman)");
+  return scenes;
+}
 
-  std::map<std::string, std::string> params;  // planner -> extra mms plan arguments
+// planner -> its extra mms plan arguments (--param), each checked against its declarations.
+std::map<std::string, std::string> plannerArgs(const BenchSettings& a) {
+  std::map<std::string, std::string> params;
   for (const std::string& p : a.params) {
     const size_t eq = p.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -258,7 +264,13 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
     checkParam(planner, p.substr(eq + 1));
     params[planner] = p.substr(eq + 1);
   }
+  return params;
+}
 
+// This shard's runs, in order: scenes x planners x seeds.
+std::vector<Job> planJobs(const BenchSettings& a) {
+  const std::vector<SceneEntry> scenes = benchScenes(a);
+  std::map<std::string, std::string> params = plannerArgs(a);
   std::vector<Job> jobs;
   size_t index = 0;
   for (const SceneEntry& s : scenes)
@@ -286,51 +298,52 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
                   "-q"};
         for (const std::string& extra : split(j.record.parameters, ' ')) j.args.push_back(extra);
         // The portfolio races its sampler beside MMS's threads.
-        j.cores = j.record.planner == "mms"    ? coresOf(j.args, a.jobs)
-                  : j.record.planner == "auto" ? std::min(a.jobs, 1 + coresOf(j.args, a.jobs))
-                                               : 1;
+        j.cores = planner == "mms"    ? coresOf(j.args, a.jobs)
+                  : planner == "auto" ? std::min(a.jobs, 1 + coresOf(j.args, a.jobs))
+                                      : 1;
         jobs.push_back(std::move(j));
       }
+  return jobs;
+}
 
-  const std::string runsFile = a.output + "/" +
-                               (a.shardCount > 1 ? "runs-" + std::to_string(a.shardIndex) + "-of-" +
-                                                       std::to_string(a.shardCount) + ".jsonl"
-                                                 : "runs.jsonl");
+// What is recorded: the runs done, and the failures per scene, planner and parameters.
+struct Ledger {
   std::set<std::string> done;
-  std::map<std::string, size_t> failures;  // per scene, planner and parameters
-  auto count = [&](const RunRecord& r) {
+  std::map<std::string, size_t> failures;
+  void count(const RunRecord& r) {
     done.insert(key(r));
     if (!r.solved()) ++failures[group(r)];
-  };
-  double newest = 0;  // when the newest recorded run of this benchmark started
-  size_t reused = 0;  // planned runs recorded already
-  if (fs::exists(runsFile)) {
-    // A resumed benchmark must measure what the recorded runs measured: refuse other limits
-    // or another mms, rather than mixing them in one table.
-    std::map<std::string, const Job*> planned;
-    for (const Job& j : jobs) planned[key(j.record)] = &j;
-    for (const RunRecord& r : readRuns(runsFile)) {
-      count(r);
-      const auto it = planned.find(key(r));
-      if (it == planned.end()) continue;
-      newest = std::max(newest, r.startedAt);
-      const RunRecord& now = it->second->record;
-      auto differs = [&](const std::string& what, const std::string& then,
-                         const std::string& asked) {
-        throw InputError(runsFile + ": (resume): its runs were made with " + what + " " + then +
-                         ", this run asks for " + asked +
-                         "; use another output folder, or the same settings to resume");
-      };
-      if (r.timeLimit != now.timeLimit)
-        differs("--time-limit", formatNumber(r.timeLimit), formatNumber(now.timeLimit));
-      if (r.memoryLimitMb != now.memoryLimitMb)
-        differs("--memory-limit", formatNumber(r.memoryLimitMb), formatNumber(now.memoryLimitMb));
-      if (!r.version.empty() && r.version != now.version) differs("mms", r.version, now.version);
-    }
-    for (const auto& entry : planned) reused += done.count(entry.first);
   }
-  // A folder kept from an earlier build resumes silently otherwise: the version need not change
-  // between builds, so say at once what is reused and when it was measured.
+};
+
+// Takes in the runs recorded in `runsFile` and returns how many of `jobs` they are. A resumed
+// benchmark must measure what the recorded runs measured: other limits or another mms are
+// refused rather than mixed in one table. A folder kept from an earlier build resumes silently
+// otherwise (the version need not change between builds), so what is reused is said at once.
+size_t resume(const std::string& runsFile, const std::vector<Job>& jobs, Ledger& ledger) {
+  if (!fs::exists(runsFile)) return 0;
+  double newest = 0;  // when the newest recorded run of this benchmark started
+  std::map<std::string, const Job*> planned;
+  for (const Job& j : jobs) planned[key(j.record)] = &j;
+  for (const RunRecord& r : readRuns(runsFile)) {
+    ledger.count(r);
+    const auto it = planned.find(key(r));
+    if (it == planned.end()) continue;
+    newest = std::max(newest, r.startedAt);
+    const RunRecord& now = it->second->record;
+    auto differs = [&](const std::string& what, const std::string& then, const std::string& asked) {
+      throw InputError(runsFile + ": (resume): its runs were made with " + what + " " + then +
+                       ", this run asks for " + asked +
+                       "; use another output folder, or the same settings to resume");
+    };
+    if (r.timeLimit != now.timeLimit)
+      differs("--time-limit", formatNumber(r.timeLimit), formatNumber(now.timeLimit));
+    if (r.memoryLimitMb != now.memoryLimitMb)
+      differs("--memory-limit", formatNumber(r.memoryLimitMb), formatNumber(now.memoryLimitMb));
+    if (!r.version.empty() && r.version != now.version) differs("mms", r.version, now.version);
+  }
+  size_t reused = 0;
+  for (const auto& entry : planned) reused += ledger.done.count(entry.first);
   if (reused > 0) {
     const std::string date = dateText(newest);
     const std::string when = date == "unknown" ? "" : ", the newest started " + date;
@@ -339,74 +352,103 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
                  "output folder to measure them again\n",
                  runsFile.c_str(), reused, jobs.size(), when.c_str());
   }
-  announce(jobs, jobs.size() - reused, a);
-  if (!a.command.empty()) {
-    std::ofstream log(a.output + "/commands.txt", std::ios::app);
-    log << a.command << "\n";
-  }
-  // With --stop-decided, a group's median is decided as unsolved once this many runs failed
-  // (the median of N runs, unsolved ones infinite, is infinite from ceil(N / 2) failures on).
-  const size_t decided = (a.runs + 1) / 2;
-  std::ofstream out(runsFile, std::ios::app);
-  if (!out) throw InputError(runsFile + ": (output): cannot open for appending");
+  return reused;
+}
 
-  const std::string& exe = a.executable;
-  const std::string tmp = a.output + "/tmp";
-  fs::create_directories(tmp);
-  bool childInterrupted = false;  // a run ended by Ctrl-C: the terminal's, reaching it first
-  auto interrupted = [&] { return (cancel && cancel->load()) || childInterrupted; };
+// Runs the jobs, each when its cores are free, and records each as it ends.
+class Schedule {
+ public:
+  Schedule(const BenchSettings& a, const std::vector<Job>& jobs, Ledger& ledger,
+           const std::string& runsFile, const std::atomic<bool>* cancel)
+      : a_(a),
+        jobs_(jobs),
+        ledger_(ledger),
+        out_(runsFile, std::ios::app),
+        cancel_(cancel),
+        tmp_(a.output + "/tmp"),
+        grace_(std::max(5.0, 0.2 * a.timeLimit)) {
+    if (!out_) throw InputError(runsFile + ": (output): cannot open for appending");
+    fs::create_directories(tmp_);
+  }
+
+  BenchOutcome run(const std::string& runsFile) {
+    while ((next_ < jobs_.size() || !running_.empty()) && !interrupted()) {
+      startWhatFits();
+      if (running_.empty()) break;
+      if (!reapOne()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    BenchOutcome outcome{finished_, skipped_, notRun_, false, runsFile};
+    if (interrupted()) {
+      for (Running& r : running_) kill(r.pid, SIGKILL);
+      for (Running& r : running_) waitpid(r.pid, nullptr, 0);
+      outcome.interrupted = true;
+      return outcome;
+    }
+    fs::remove_all(tmp_);
+    return outcome;
+  }
+
+ private:
   struct Running {
     Job job;
     pid_t pid;
     std::chrono::steady_clock::time_point started;
     std::string stats;
   };
-  std::vector<Running> running;
-  size_t next = 0, finished = 0, skipped = 0, notRun = 0, busy = 0;
-  const size_t total = jobs.size();
-  const double grace = std::max(5.0, 0.2 * a.timeLimit);
-  while ((next < jobs.size() || !running.empty()) && !interrupted()) {
-    // Runs start in list order, each when its cores are free.
-    while (next < jobs.size() && busy + jobs[next].cores <= a.jobs) {
-      Job job = jobs[next++];
-      if (done.count(key(job.record))) {
-        ++skipped;
+
+  bool interrupted() const { return (cancel_ && cancel_->load()) || childInterrupted_; }
+
+  // With --stop-decided, a group's median is decided as unsolved once this many runs failed
+  // (the median of N runs, unsolved ones infinite, is infinite from ceil(N / 2) failures on).
+  bool decided(const RunRecord& r) const {
+    const auto it = ledger_.failures.find(group(r));
+    return a_.stopDecided && it != ledger_.failures.end() && it->second >= (a_.runs + 1) / 2;
+  }
+
+  // Runs start in list order, each when its cores are free.
+  void startWhatFits() {
+    while (next_ < jobs_.size() && busy_ + jobs_[next_].cores <= a_.jobs) {
+      Job job = jobs_[next_++];
+      if (ledger_.done.count(key(job.record))) {
+        ++skipped_;
         continue;
       }
-      if (a.stopDecided && failures[group(job.record)] >= decided) {
+      if (decided(job.record)) {
         // Recorded, so that reports count it and a resumed benchmark does not run it.
         RunRecord rec = job.record;
         rec.status = "not_run";
-        rec.detail = "median decided: " + std::to_string(failures[group(rec)]) + " of " +
-                     std::to_string(a.runs) + " runs failed";
-        out << rec.toJson().dump() << "\n" << std::flush;
-        count(rec);
-        ++notRun;
+        rec.detail = "median decided: " + std::to_string(ledger_.failures[group(rec)]) + " of " +
+                     std::to_string(a_.runs) + " runs failed";
+        out_ << rec.toJson().dump() << "\n" << std::flush;
+        ledger_.count(rec);
+        ++notRun_;
         continue;
       }
-      busy += job.cores;
+      busy_ += job.cores;
       job.record.cores = job.cores;
       job.record.startedAt =
           std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
               .count();
       Running r{job, 0, std::chrono::steady_clock::now(),
-                tmp + "/run-" + std::to_string(next) + ".json"};
+                tmp_ + "/run-" + std::to_string(next_) + ".json"};
       fs::remove(r.stats);
       r.job.args.push_back("--stats-json");
       r.job.args.push_back(r.stats);
-      r.pid = start(exe, r.job, a.memoryMb);
-      running.push_back(std::move(r));
+      r.pid = start(a_.executable, r.job, a_.memoryMb);
+      running_.push_back(std::move(r));
     }
-    if (running.empty()) break;
-    bool reaped = false;
-    for (size_t i = 0; i < running.size(); ++i) {
-      Running& r = running[i];
+  }
+
+  // Records one run that ended, if any did; a run past its limit and grace is killed.
+  bool reapOne() {
+    for (size_t i = 0; i < running_.size(); ++i) {
+      Running& r = running_[i];
       int status = 0;
       struct rusage usage {};
       const pid_t got = wait4(r.pid, &status, WNOHANG, &usage);
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - r.started).count();
-      if (got == 0 && elapsed > a.timeLimit + grace) {
+      if (got == 0 && elapsed > a_.timeLimit + grace_) {
         kill(r.pid, SIGKILL);
         continue;  // reaped on a later pass
       }
@@ -414,50 +456,72 @@ BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cance
       // A run ended by Ctrl-C (exit 130, or SIGINT before it installed its handler) is not a
       // result: it is left unrecorded, to run again on resume.
       if ((WIFEXITED(status) && WEXITSTATUS(status) == 130) ||
-          (WIFSIGNALED(status) && WTERMSIG(status) == SIGINT)) {
-        childInterrupted = true;
-        busy -= r.job.cores;
-        running.erase(running.begin() + long(i));
-        reaped = true;
-        break;
-      }
-      RunRecord rec = r.job.record;
-      rec.wallSeconds = elapsed;
-      rec.peakMemoryMb = usage.ru_maxrss / 1024.0;
-      rec.status = "crashed";
-      if (WIFSIGNALED(status))
-        rec.detail = WTERMSIG(status) == SIGKILL ? "killed after the time limit"
-                                                 : "signal " + std::to_string(WTERMSIG(status));
-      if (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) rec.status = "killed";
-      if (WIFEXITED(status)) {
-        fillFromStats(rec, r.stats);
-        if (WEXITSTATUS(status) == 3)
-          rec.status = "crashed", rec.detail = "internal error or out of memory";
-        rec.failIfOverLimit();
-      }
-      out << rec.toJson().dump() << "\n" << std::flush;
-      count(rec);
-      ++finished;
-      std::fprintf(stderr, "mms bench: [%zu/%zu] %s %s seed %llu: %s %.3f s\n",
-                   finished + skipped + notRun, total, rec.scene.c_str(), rec.planner.c_str(),
-                   (unsigned long long)rec.seed, rec.status.c_str(), rec.seconds);
-      fs::remove(r.stats);
-      busy -= r.job.cores;
-      running.erase(running.begin() + long(i));
-      reaped = true;
-      break;
+          (WIFSIGNALED(status) && WTERMSIG(status) == SIGINT))
+        childInterrupted_ = true;
+      else
+        record(r, status, usage, elapsed);
+      busy_ -= r.job.cores;
+      running_.erase(running_.begin() + long(i));
+      return true;
     }
-    if (!reaped) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    return false;
   }
-  BenchOutcome outcome{finished, skipped, notRun, false, runsFile};
-  if (interrupted()) {
-    for (Running& r : running) kill(r.pid, SIGKILL);
-    for (Running& r : running) waitpid(r.pid, nullptr, 0);
-    outcome.interrupted = true;
-    return outcome;
+
+  void record(const Running& r, int status, const struct rusage& usage, double elapsed) {
+    RunRecord rec = r.job.record;
+    rec.wallSeconds = elapsed;
+    rec.peakMemoryMb = usage.ru_maxrss / 1024.0;
+    rec.status = "crashed";
+    if (WIFSIGNALED(status))
+      rec.detail = WTERMSIG(status) == SIGKILL ? "killed after the time limit"
+                                               : "signal " + std::to_string(WTERMSIG(status));
+    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) rec.status = "killed";
+    if (WIFEXITED(status)) {
+      fillFromStats(rec, r.stats);
+      if (WEXITSTATUS(status) == 3)
+        rec.status = "crashed", rec.detail = "internal error or out of memory";
+      rec.failIfOverLimit();
+    }
+    out_ << rec.toJson().dump() << "\n" << std::flush;
+    ledger_.count(rec);
+    ++finished_;
+    std::fprintf(stderr, "mms bench: [%zu/%zu] %s %s seed %llu: %s %.3f s\n",
+                 finished_ + skipped_ + notRun_, jobs_.size(), rec.scene.c_str(),
+                 rec.planner.c_str(), (unsigned long long)rec.seed, rec.status.c_str(),
+                 rec.seconds);
+    fs::remove(r.stats);
   }
-  fs::remove_all(tmp);
-  writeBenchReports(a.output);
+
+  const BenchSettings& a_;
+  const std::vector<Job>& jobs_;
+  Ledger& ledger_;
+  std::ofstream out_;
+  const std::atomic<bool>* cancel_;
+  const std::string tmp_;
+  const double grace_;
+  bool childInterrupted_ = false;  // a run ended by Ctrl-C: the terminal's, reaching it first
+  std::vector<Running> running_;
+  size_t next_ = 0, finished_ = 0, skipped_ = 0, notRun_ = 0, busy_ = 0;
+};
+
+}  // namespace
+
+BenchOutcome runBenchmark(const BenchSettings& a, const std::atomic<bool>* cancel) {
+  fs::create_directories(a.output);
+  const std::vector<Job> jobs = planJobs(a);
+  const std::string runsFile = a.output + "/" +
+                               (a.shardCount > 1 ? "runs-" + std::to_string(a.shardIndex) + "-of-" +
+                                                       std::to_string(a.shardCount) + ".jsonl"
+                                                 : "runs.jsonl");
+  Ledger ledger;
+  const size_t reused = resume(runsFile, jobs, ledger);
+  announce(jobs, jobs.size() - reused, a);
+  if (!a.command.empty()) {
+    std::ofstream log(a.output + "/commands.txt", std::ios::app);
+    log << a.command << "\n";
+  }
+  const BenchOutcome outcome = Schedule(a, jobs, ledger, runsFile, cancel).run(runsFile);
+  if (!outcome.interrupted) writeBenchReports(a.output);
   return outcome;
 }
 
