@@ -8,35 +8,6 @@
 
 namespace mms {
 
-std::string ParamSpec::key() const {
-  std::string k = name;
-  for (char& c : k)
-    if (c == '-') c = '_';
-  return k;
-}
-
-std::string ParamSpec::problem(double v) const {
-  if (!std::isfinite(v)) return "not a number";
-  if ((type == Type::Integer || type == Type::Flag) && v != std::floor(v)) return "not an integer";
-  if (v < min || v > max)
-    return formatNumber(v) + " is not in [" + formatNumber(min) + ", " + formatNumber(max) + "]";
-  return "";
-}
-
-std::string ParamSpec::parse(const std::string& text, double& v) const {
-  for (size_t i = 0; i < choices.size(); ++i)
-    if (text == choices[i]) {
-      v = double(i);
-      return "";
-    }
-  std::string names;
-  for (const std::string& c : choices) names += (names.empty() ? "" : ", ") + c;
-  const std::optional<double> number = wholeNumber(text);
-  if (number) v = *number;
-  if (!number) return "'" + text + "' is not " + (choices.empty() ? "a number" : "one of " + names);
-  return problem(v);
-}
-
 bool afterFirstPath(const std::string& phase) {
   return phase == "optimize" || phase == "simplify" || phase == "restarts";
 }
