@@ -57,9 +57,12 @@ struct Entry {
   bool range, neighbours, segment;  // which of the optional parameters it reads
 };
 
-}  // namespace
+// The parameters OMPL's planners declare, each once (a planner takes those its entry names).
+struct OmplSpecs {
+  ParamSpec resolution, range, k, segment, simplify, certified, free;
+};
 
-std::vector<PlannerInfo> omplPlannerInfos() {
+OmplSpecs omplSpecs() {
   const OmplSettings d;
   const ParamSpec resolution{
       "resolution",
@@ -107,6 +110,13 @@ std::vector<PlannerInfo> omplPlannerInfos() {
       double(d.freeSamples),
       "OMPL planners: redraw each robot's uniform samples until it is clear of the "
       "obstacles (up to 100 draws), so that trees grow towards free space"};
+  return {resolution, range, k, segment, simplify, certified, free};
+}
+
+}  // namespace
+
+std::vector<PlannerInfo> omplPlannerInfos() {
+  const auto [resolution, range, k, segment, simplify, certified, free] = omplSpecs();
   const Entry entries[] = {
       {"prm", "OMPL PRM (uniform samples)", false, true, false},
       {"obprm", "OMPL PRM with OMPL's obstacle-based sampler", false, true, false},

@@ -10,9 +10,9 @@
 #include "lab/EuclideanMms.h"
 #include "lab/KClearance.h"
 #include "lab/PacmanPassage.h"
-#include "render/Plot.h"
 #include "lab/PrmOnBoxes.h"
 #include "mms/Termination.h"
+#include "render/Plot.h"
 #include "util/Parallel.h"
 #include "util/Random.h"
 
@@ -110,6 +110,22 @@ struct DimSetup {
   double rho;
 };
 
+// The manifolds per family after which Theorem 3.3's bound, with its own constants, puts the
+// failure rate under 1 %: mu_A for a rho/sqrt2 ball in A, eta_B for the lens of two rho/sqrt2
+// balls in B whose centres are rho apart (the worst case).
+size_t theoremBound(const DimSetup& s) {
+  const double r = s.rho / std::sqrt(2.0);
+  const double mu = unitBall(s.k) * std::pow(r, s.k);
+  const double etaB = lensVolume(s.d - s.k, r, s.rho);
+  const double L = 0.6 + 0.4 * std::sqrt(double(s.d - 1));  // the path's three legs
+  const double pieces = std::ceil(L / s.rho);
+  size_t n = 0;
+  while (n < 100000000 &&
+         pieces * (std::pow(1 - mu, double(n)) + std::pow(1 - etaB, double(n))) > 0.01)
+    n = n ? n * 11 / 10 + 1 : 1;
+  return n;
+}
+
 }  // namespace
 
 std::vector<LabFile> completenessLab(const LabOptions& o) {
@@ -175,17 +191,7 @@ std::vector<LabFile> completenessLab(const LabOptions& o) {
       csv << "prm," << s.d << "," << s.k << "," << s.rho << "," << n << ","
           << size_t(std::lround(f * double(trials))) << "," << trials << "\n";
 
-    // The theorem's bound with its own constants: mu_A for a rho/sqrt2 ball in A, eta_B for
-    // the lens of two rho/sqrt2 balls in B whose centres are rho apart (the worst case).
-    const double r = s.rho / std::sqrt(2.0);
-    const double mu = unitBall(s.k) * std::pow(r, s.k);
-    const double etaB = lensVolume(s.d - s.k, r, s.rho);
-    const double L = 0.6 + 0.4 * std::sqrt(double(s.d - 1));  // the path's three legs
-    const double pieces = std::ceil(L / s.rho);
-    size_t boundN = 0;
-    while (boundN < 100000000 &&
-           pieces * (std::pow(1 - mu, double(boundN)) + std::pow(1 - etaB, double(boundN))) > 0.01)
-      boundN = boundN ? boundN * 11 / 10 + 1 : 1;
+    const size_t boundN = theoremBound(s);
     auto slope = logSlope(mms, maxRounds);
     double mmsMs = 0, prmMs = 0;
     for (double v : mmsSeconds) mmsMs += 1000 * v / double(trials);
@@ -215,13 +221,14 @@ std::vector<LabFile> completenessLab(const LabOptions& o) {
           {"completeness-prm.svg", linePlot(prmPlot, prmSeries)}};
 }
 
-std::vector<LabFile> passagesLab(const LabOptions& o) {
-  std::vector<double> epsilons = {0.2, 0.1, 0.05, 0.025, 0.0125};
-  if (o.quick) epsilons = {0.2, 0.1};
+namespace {
+
+// Flume and tunnel: PRM and MMS solving each, success and time against eps; rows of
+// passages.csv and passages.md, and the success and time series.
+void flumeAndTunnel(const LabOptions& o, const std::vector<double>& epsilons, std::ostream& csv,
+                    std::ostream& md, std::vector<Series>& success, std::vector<Series>& times) {
   const size_t trials = o.trials ? o.trials : o.quick ? 4 : 50;
   const size_t maxRounds = o.quick ? 40 : 400, maxMilestones = o.quick ? 2000 : 50000;
-
-  std::ostringstream csv, md;
   csv << "space,eps,planner,trial,solved,samples,seconds\n";
   // PRM, MMS with planes and lines in every axis direction, and MMS with the theorem's one
   // perpendicular pair whose lines run through the wall (planes fixing x, lines along x): the
@@ -235,7 +242,6 @@ std::vector<LabFile> passagesLab(const LabOptions& o) {
         "planes fixing x and lines along x. Cells: solved, median time and samples (milestones "
         "or manifolds) of the solved trials.\n\n| passage | eps | volume 0.3 eps^2 | PRM | "
         "MMS, all axes | MMS, x pair only |\n|---|---|---|---|---|---|\n";
-  std::vector<Series> success, times;
   const char* spaces[] = {"flume", "tunnel"};
   for (size_t sp = 0; sp < 2; ++sp) {
     std::vector<Series> ok, tm;
@@ -296,8 +302,12 @@ std::vector<LabFile> passagesLab(const LabOptions& o) {
     success.insert(success.end(), ok.begin(), ok.end());
     times.insert(times.end(), tm.begin(), tm.end());
   }
+}
 
-  // k-clearance sequences of both passages against eps, with the paper's values.
+// The k-clearance sequences of both passages against eps, with the paper's values.
+std::string kClearanceOfPassages(const LabOptions& o, const std::vector<double>& epsilons,
+                                 std::vector<Series>& kSeries) {
+  const char* spaces[] = {"flume", "tunnel"};
   std::ostringstream kmd;
   kmd << "\n## k-clearance of flume and tunnel\n\nEstimated radius of the largest k-disk "
          "along the best path (bottleneck over the free arrangement cells, each split 5 times "
@@ -306,7 +316,6 @@ std::vector<LabFile> passagesLab(const LabOptions& o) {
          "whose k-clearance is at least 10 times the 3-clearance (0: none is).\n\n"
          "| passage | eps | 3-clearance | 2-clearance | 1-clearance | dimension |\n"
          "|---|---|---|---|---|---|\n";
-  std::vector<Series> kSeries;
   std::vector<std::vector<std::vector<double>>> seq(
       2, std::vector<std::vector<double>>(epsilons.size()));
   parallelFor(2 * epsilons.size(), o.threads, [&](size_t i) {
@@ -338,7 +347,12 @@ std::vector<LabFile> passagesLab(const LabOptions& o) {
   }
   say(o, "passages: k-clearance of flume and tunnel done");
 
-  std::vector<LabFile> files;
+  return kmd.str();
+}
+
+// The Pacman's passage, a sampled proxy of its k-clearance against tightness: its table, and
+// its plot added to `files`.
+std::string pacmanPassages(const LabOptions& o, std::vector<LabFile>& files) {
   std::string pacmanMd;
   if (o.pacman) {
     std::vector<double> tightness = {0, 0.5, 0.8, 0.9, 0.95, 0.98};
@@ -383,6 +397,20 @@ std::vector<LabFile> passagesLab(const LabOptions& o) {
     say(o, "passages: Pacman proxy done");
   }
 
+  return pacmanMd;
+}
+
+}  // namespace
+
+std::vector<LabFile> passagesLab(const LabOptions& o) {
+  std::vector<double> epsilons = {0.2, 0.1, 0.05, 0.025, 0.0125};
+  if (o.quick) epsilons = {0.2, 0.1};
+  std::ostringstream csv, md;
+  std::vector<Series> success, times, kSeries;
+  flumeAndTunnel(o, epsilons, csv, md, success, times);
+  const std::string kmd = kClearanceOfPassages(o, epsilons, kSeries);
+  std::vector<LabFile> files;
+  const std::string pacmanMd = pacmanPassages(o, files);
   PlotSpec s1{"Success rate: flume (solid) vs tunnel (dashed)", "eps", "solved share", true, false};
   PlotSpec s2{"Median time of solved trials", "eps", "seconds", true, true};
   PlotSpec s3{"k-clearance: flume (solid) vs tunnel (dashed)", "eps", "k-clearance", true, true};
@@ -391,7 +419,7 @@ std::vector<LabFile> passagesLab(const LabOptions& o) {
   files.push_back({"passages-kclearance.svg", linePlot(s3, kSeries)});
   files.push_back({"passages.csv", csv.str()});
   files.push_back({"passages.md", "# mms lab passages\n\nSeed " + std::to_string(o.seed) + ".\n\n" +
-                                      md.str() + kmd.str() + pacmanMd});
+                                      md.str() + kmd + pacmanMd});
   return files;
 }
 

@@ -17,6 +17,33 @@ double norm(const Point& v) {
   return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0));
 }
 
+// How far a ray runs free, marched in 32 steps and the first blocked step bisected: thin
+// obstacles between steps are missed, so the radii are estimates from above at that resolution.
+RayFunction marchingRay(const std::function<bool(const Point&)>& free) {
+  return [free](const Point& x, const Point& u, double cap) {
+    if (!free(x)) return 0.0;
+    const int steps = 32;
+    double h = cap / steps, lo = 0, hi = -1;
+    Point p(6);
+    for (int i = 1; i <= steps; ++i) {
+      double t = h * i;
+      for (int a = 0; a < 6; ++a) p[a] = x[a] + t * u[a];
+      if (!free(p)) {
+        hi = t;
+        break;
+      }
+      lo = t;
+    }
+    if (hi < 0) return cap;
+    for (int i = 0; i < 10; ++i) {
+      double t = 0.5 * (lo + hi);
+      for (int a = 0; a < 6; ++a) p[a] = x[a] + t * u[a];
+      (free(p) ? lo : hi) = t;
+    }
+    return lo;
+  };
+}
+
 }  // namespace
 
 PacmanPassage measurePacmanPassage(double tightness, const PacmanPassageSettings& settings) {
@@ -42,30 +69,7 @@ PacmanPassage measurePacmanPassage(double tightness, const PacmanPassageSettings
   DiskSearch disk = settings.disk;
   disk.seed = settings.seed;
   disk.cap = settings.cap > 0 ? settings.cap : 0.5 * std::max(r0, r1);
-  // March along the ray in 32 steps, then bisect the first blocked step: thin obstacles
-  // between steps are missed, so the radii are estimates from above at that resolution.
-  RayFunction ray = [&](const Point& x, const Point& u, double cap) {
-    if (!free(x)) return 0.0;
-    const int steps = 32;
-    double h = cap / steps, lo = 0, hi = -1;
-    Point p(6);
-    for (int i = 1; i <= steps; ++i) {
-      double t = h * i;
-      for (int a = 0; a < 6; ++a) p[a] = x[a] + t * u[a];
-      if (!free(p)) {
-        hi = t;
-        break;
-      }
-      lo = t;
-    }
-    if (hi < 0) return cap;
-    for (int i = 0; i < 10; ++i) {
-      double t = 0.5 * (lo + hi);
-      for (int a = 0; a < 6; ++a) p[a] = x[a] + t * u[a];
-      (free(p) ? lo : hi) = t;
-    }
-    return lo;
-  };
+  const RayFunction ray = marchingRay(free);
 
   // The path in metric coordinates, sampled evenly by length.
   std::vector<Point> way;

@@ -35,6 +35,43 @@ std::vector<double> ticks(double lo, double hi, bool log) {
   return t;
 }
 
+// One series: its line, markers or crosses, error bars and labels, and its legend entry at the
+// plot's right edge `right` (row `legendRow`, counted up when it has a name).
+template <class Usable, class Fx, class Fy>
+void drawSeries(std::ostringstream& svg, const Series& s, size_t i, const Usable& usable,
+                const Fx& fx, const Fy& fy, double right, double top, size_t& legendRow) {
+  std::ostringstream pts;
+  pts << std::fixed << std::setprecision(1);
+  for (auto [x, y] : s.points)
+    if (usable(x, y)) pts << fx(x) << "," << fy(y) << " ";
+  if (s.line)
+    svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.6\""
+        << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << " points=\"" << pts.str() << "\"/>\n";
+  for (size_t k = 0; k < s.points.size(); ++k) {
+    const auto [x, y] = s.points[k];
+    if (!usable(x, y)) continue;
+    if (k < s.bars.size() && usable(x, s.bars[k].first) && usable(x, s.bars[k].second))
+      svg << "<line x1=\"" << fx(x) << "\" y1=\"" << fy(s.bars[k].first) << "\" x2=\"" << fx(x)
+          << "\" y2=\"" << fy(s.bars[k].second) << "\" stroke=\"" << s.colour << "\"/>\n";
+    if (s.markers && s.cross)
+      svg << "<path d=\"M" << fx(x) - 4 << "," << fy(y) - 4 << "l8,8m0,-8l-8,8\" stroke=\""
+          << s.colour << "\" stroke-width=\"2\"/>\n";
+    else if (s.markers)
+      svg << "<circle cx=\"" << fx(x) << "\" cy=\"" << fy(y) << "\" r=\"2.6\" fill=\"" << s.colour
+          << "\"/>\n";
+    if (k < s.labels.size() && !s.labels[k].empty())
+      svg << "<text x=\"" << fx(x) << "\" y=\"" << fy(y) - 8 - 10 * double(i % 3)
+          << "\" text-anchor=\"middle\" font-size=\"9\" fill=\"" << s.colour << "\">"
+          << escapeMarkup(s.labels[k]) << "</text>\n";
+  }
+  if (s.name.empty()) return;
+  double ly = top + 8 + 18 * double(legendRow++);
+  svg << "<line x1=\"" << right + 12 << "\" y1=\"" << ly << "\" x2=\"" << right + 34 << "\" y2=\""
+      << ly << "\" stroke=\"" << s.colour << "\" stroke-width=\"2\""
+      << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << "/>\n<text x=\"" << right + 40
+      << "\" y=\"" << ly + 4 << "\">" << escapeMarkup(s.name) << "</text>\n";
+}
+
 }  // namespace
 
 const char* seriesColour(size_t i) {
@@ -113,39 +150,8 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
           << fy(y) << "\" stroke=\"black\" stroke-dasharray=\"4,3\"/>\n<text x=\"" << left + 4
           << "\" y=\"" << fy(y) - 4 << "\">" << escapeMarkup(label) << "</text>\n";
   size_t legendRow = 0;
-  for (size_t i = 0; i < series.size(); ++i) {
-    const Series& s = series[i];
-    std::ostringstream pts;
-    pts << std::fixed << std::setprecision(1);
-    for (auto [x, y] : s.points)
-      if (usable(x, y)) pts << fx(x) << "," << fy(y) << " ";
-    if (s.line)
-      svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.6\""
-          << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << " points=\"" << pts.str() << "\"/>\n";
-    for (size_t k = 0; k < s.points.size(); ++k) {
-      const auto [x, y] = s.points[k];
-      if (!usable(x, y)) continue;
-      if (k < s.bars.size() && usable(x, s.bars[k].first) && usable(x, s.bars[k].second))
-        svg << "<line x1=\"" << fx(x) << "\" y1=\"" << fy(s.bars[k].first) << "\" x2=\"" << fx(x)
-            << "\" y2=\"" << fy(s.bars[k].second) << "\" stroke=\"" << s.colour << "\"/>\n";
-      if (s.markers && s.cross)
-        svg << "<path d=\"M" << fx(x) - 4 << "," << fy(y) - 4 << "l8,8m0,-8l-8,8\" stroke=\""
-            << s.colour << "\" stroke-width=\"2\"/>\n";
-      else if (s.markers)
-        svg << "<circle cx=\"" << fx(x) << "\" cy=\"" << fy(y) << "\" r=\"2.6\" fill=\"" << s.colour
-            << "\"/>\n";
-      if (k < s.labels.size() && !s.labels[k].empty())
-        svg << "<text x=\"" << fx(x) << "\" y=\"" << fy(y) - 8 - 10 * double(i % 3)
-            << "\" text-anchor=\"middle\" font-size=\"9\" fill=\"" << s.colour << "\">"
-            << escapeMarkup(s.labels[k]) << "</text>\n";
-    }
-    if (s.name.empty()) continue;
-    double ly = top + 8 + 18 * double(legendRow++);
-    svg << "<line x1=\"" << left + pw + 12 << "\" y1=\"" << ly << "\" x2=\"" << left + pw + 34
-        << "\" y2=\"" << ly << "\" stroke=\"" << s.colour << "\" stroke-width=\"2\""
-        << (s.dashed ? " stroke-dasharray=\"5,4\"" : "") << "/>\n<text x=\"" << left + pw + 40
-        << "\" y=\"" << ly + 4 << "\">" << escapeMarkup(s.name) << "</text>\n";
-  }
+  for (size_t i = 0; i < series.size(); ++i)
+    drawSeries(svg, series[i], i, usable, fx, fy, left + pw, top, legendRow);
   if (!spec.footnote.empty())
     svg << "<text x=\"" << left + pw + 12 << "\" y=\"" << top + 8 + 18 * double(legendRow) + 10
         << "\" font-size=\"10\">" << escapeMarkup(spec.footnote) << "</text>\n";

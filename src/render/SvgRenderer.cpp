@@ -69,6 +69,93 @@ std::vector<LegendItem> legendLayout(const Scene& scene, double left, double rig
   return items;
 }
 
+// The planner's cells and the lines' points, when asked for.
+void drawOverlays(std::ostringstream& svg, const SvgOptions& o, double stroke) {
+  if (!o.regions.empty()) {
+    svg << "<g id=\"cells\" fill=\"#7fbf7f\" fill-opacity=\"0.12\" fill-rule=\"evenodd\" "
+           "stroke=\"#2e7d32\" "
+        << "stroke-opacity=\"0.6\" stroke-width=\"" << fmt(0.5 * stroke) << "\">\n";
+    for (const std::vector<Ring>& region : o.regions) {
+      svg << "<path d=\"";
+      for (const Ring& r : region) svg << "M" << points(r) << "Z ";
+      svg << "\"/>\n";
+    }
+    svg << "</g>\n";
+  }
+  if (!o.markers.empty()) {
+    svg << "<g id=\"markers\" fill=\"#555\" fill-opacity=\"0.6\">\n";
+    for (Vec2 m : o.markers)
+      svg << "<circle cx=\"" << fmt(m.x) << "\" cy=\"" << fmt(m.y) << "\" r=\"" << fmt(1.5 * stroke)
+          << "\"/>\n";
+    svg << "</g>\n";
+  }
+}
+
+// Each robot's reference point traced along the path, and faint poses evenly spaced by motion.
+void drawTraces(std::ostringstream& svg, const Scene& scene, const Path& path, const SvgOptions& o,
+                double stroke) {
+  const size_t k = scene.robots.size();
+  const std::vector<double> acc = cumulativeEffort(scene, path);
+  const double total = acc.back();
+  // Traces of the reference points.
+  for (size_t i = 0; i < k; ++i) {
+    svg << "<polyline fill=\"none\" stroke=\"" << robotColour(i) << "\" stroke-width=\""
+        << fmt(stroke) << "\" stroke-dasharray=\"" << fmt(3 * stroke) << " " << fmt(2 * stroke)
+        << "\" points=\"";
+    for (const Config& q : path.waypoints) svg << fmt(q[3 * i]) << "," << fmt(q[3 * i + 1]) << " ";
+    svg << "\"/>\n";
+  }
+  // Ghost poses evenly spaced by motion.
+  svg << "<g id=\"ghosts\" fill=\"#888\" fill-opacity=\"0.08\" stroke=\"#555\" "
+         "stroke-opacity=\"0.35\" "
+      << "stroke-width=\"" << fmt(0.6 * stroke) << "\">\n";
+  for (int g = 1; g < o.ghosts && total > 0; ++g)
+    for (size_t i = 0; i < k; ++i)
+      svg << "<polygon points=\""
+          << points(placedRing(scene.robots[i].shape,
+                               poseAtEffort(path, acc, i, total * g / o.ghosts)))
+          << "\"/>\n";
+  svg << "</g>\n";
+}
+
+// Every robot moving along the path, looped (SVG's own animation: no script).
+void drawAnimation(std::ostringstream& svg, const Scene& scene, const Path& path,
+                   const SvgOptions& o, double stroke, double extent) {
+  const size_t k = scene.robots.size();
+  const std::vector<double> acc = cumulativeEffort(scene, path);
+  const double total = acc.back();
+  const double dur = std::clamp(total / extent * o.secondsPerExtent, 2.0, 120.0);
+  std::string keyTimes;
+  for (size_t j = 0; j < acc.size(); ++j) {
+    if (j) keyTimes += ';';
+    keyTimes += fmt(total > 0 ? acc[j] / total : double(j) / std::max<size_t>(1, acc.size() - 1));
+  }
+  if (acc.size() == 1) keyTimes.assign(1, '0');
+  svg << "<g id=\"animation\">\n";
+  for (size_t i = 0; i < k; ++i) {
+    std::string moves, turns;
+    for (size_t j = 0; j < path.waypoints.size(); ++j) {
+      const Pose p = poseOf(path.waypoints[j], i);
+      if (j) moves += ';', turns += ';';
+      moves += fmt(p.x) + " " + fmt(p.y);
+      turns += fmt(p.theta * 180 / M_PI);
+    }
+    const Pose p0 = poseOf(path.waypoints.front(), i);
+    const std::string timing = "dur=\"" + fmt(dur) + "s\" keyTimes=\"" + keyTimes +
+                               "\" calcMode=\"linear\" repeatCount=\"indefinite\"";
+    svg << "<g transform=\"translate(" << fmt(p0.x) << " " << fmt(p0.y) << ")\">"
+        << "<animateTransform attributeName=\"transform\" type=\"translate\" values=\"" << moves
+        << "\" " << timing << "/>\n"
+        << "<g transform=\"rotate(" << fmt(p0.theta * 180 / M_PI) << ")\">"
+        << "<animateTransform attributeName=\"transform\" type=\"rotate\" values=\"" << turns
+        << "\" " << timing << "/>\n"
+        << "<polygon fill=\"" << (k >= 2 ? robotColour(i) : "#f2b01e")
+        << "\" fill-opacity=\"0.9\" stroke=\"#333\" stroke-width=\"" << fmt(stroke)
+        << "\" points=\"" << points(scene.robots[i].shape) << "\"/>\n</g></g>\n";
+  }
+  svg << "</g>\n";
+}
+
 }  // namespace
 
 std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o) {
@@ -115,50 +202,9 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
   for (const Ring& ob : scene.obstacles) svg << "<polygon points=\"" << points(ob) << "\"/>\n";
   svg << "</g>\n";
 
-  if (!o.regions.empty()) {
-    svg << "<g id=\"cells\" fill=\"#7fbf7f\" fill-opacity=\"0.12\" fill-rule=\"evenodd\" "
-           "stroke=\"#2e7d32\" "
-        << "stroke-opacity=\"0.6\" stroke-width=\"" << fmt(0.5 * stroke) << "\">\n";
-    for (const std::vector<Ring>& region : o.regions) {
-      svg << "<path d=\"";
-      for (const Ring& r : region) svg << "M" << points(r) << "Z ";
-      svg << "\"/>\n";
-    }
-    svg << "</g>\n";
-  }
-  if (!o.markers.empty()) {
-    svg << "<g id=\"markers\" fill=\"#555\" fill-opacity=\"0.6\">\n";
-    for (Vec2 m : o.markers)
-      svg << "<circle cx=\"" << fmt(m.x) << "\" cy=\"" << fmt(m.y) << "\" r=\"" << fmt(1.5 * stroke)
-          << "\"/>\n";
-    svg << "</g>\n";
-  }
+  drawOverlays(svg, o, stroke);
 
-  const size_t k = scene.robots.size();
-  if (path && !path->waypoints.empty()) {
-    const std::vector<double> acc = cumulativeEffort(scene, *path);
-    const double total = acc.back();
-    // Traces of the reference points.
-    for (size_t i = 0; i < k; ++i) {
-      svg << "<polyline fill=\"none\" stroke=\"" << robotColour(i) << "\" stroke-width=\""
-          << fmt(stroke) << "\" stroke-dasharray=\"" << fmt(3 * stroke) << " " << fmt(2 * stroke)
-          << "\" points=\"";
-      for (const Config& q : path->waypoints)
-        svg << fmt(q[3 * i]) << "," << fmt(q[3 * i + 1]) << " ";
-      svg << "\"/>\n";
-    }
-    // Ghost poses evenly spaced by motion.
-    svg << "<g id=\"ghosts\" fill=\"#888\" fill-opacity=\"0.08\" stroke=\"#555\" "
-           "stroke-opacity=\"0.35\" "
-        << "stroke-width=\"" << fmt(0.6 * stroke) << "\">\n";
-    for (int g = 1; g < o.ghosts && total > 0; ++g)
-      for (size_t i = 0; i < k; ++i)
-        svg << "<polygon points=\""
-            << points(placedRing(scene.robots[i].shape,
-                                 poseAtEffort(*path, acc, i, total * g / o.ghosts)))
-            << "\"/>\n";
-    svg << "</g>\n";
-  }
+  if (path && !path->waypoints.empty()) drawTraces(svg, scene, *path, o, stroke);
   svg << "<g id=\"starts\" fill=\"#2ca02c\" fill-opacity=\"0.55\" stroke=\"#1a631a\" "
          "stroke-width=\""
       << fmt(stroke) << "\">\n";
@@ -171,40 +217,8 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
     svg << "<polygon points=\"" << points(placedRing(r.shape, r.goal)) << "\"/>\n";
   svg << "</g>\n";
 
-  if (path && !path->waypoints.empty() && o.animate) {
-    const std::vector<double> acc = cumulativeEffort(scene, *path);
-    const double total = acc.back();
-    const double dur = std::clamp(total / extent * o.secondsPerExtent, 2.0, 120.0);
-    std::string keyTimes;
-    for (size_t j = 0; j < acc.size(); ++j) {
-      if (j) keyTimes += ';';
-      keyTimes += fmt(total > 0 ? acc[j] / total : double(j) / std::max<size_t>(1, acc.size() - 1));
-    }
-    if (acc.size() == 1) keyTimes = "0";
-    svg << "<g id=\"animation\">\n";
-    for (size_t i = 0; i < k; ++i) {
-      std::string moves, turns;
-      for (size_t j = 0; j < path->waypoints.size(); ++j) {
-        const Pose p = poseOf(path->waypoints[j], i);
-        if (j) moves += ';', turns += ';';
-        moves += fmt(p.x) + " " + fmt(p.y);
-        turns += fmt(p.theta * 180 / M_PI);
-      }
-      const Pose p0 = poseOf(path->waypoints.front(), i);
-      const std::string timing = "dur=\"" + fmt(dur) + "s\" keyTimes=\"" + keyTimes +
-                                 "\" calcMode=\"linear\" repeatCount=\"indefinite\"";
-      svg << "<g transform=\"translate(" << fmt(p0.x) << " " << fmt(p0.y) << ")\">"
-          << "<animateTransform attributeName=\"transform\" type=\"translate\" values=\"" << moves
-          << "\" " << timing << "/>\n"
-          << "<g transform=\"rotate(" << fmt(p0.theta * 180 / M_PI) << ")\">"
-          << "<animateTransform attributeName=\"transform\" type=\"rotate\" values=\"" << turns
-          << "\" " << timing << "/>\n"
-          << "<polygon fill=\"" << (k >= 2 ? robotColour(i) : "#f2b01e")
-          << "\" fill-opacity=\"0.9\" stroke=\"#333\" stroke-width=\"" << fmt(stroke)
-          << "\" points=\"" << points(scene.robots[i].shape) << "\"/>\n</g></g>\n";
-    }
-    svg << "</g>\n";
-  }
+  if (path && !path->waypoints.empty() && o.animate)
+    drawAnimation(svg, scene, *path, o, stroke, extent);
   svg << "</g>\n</svg>\n";
   return svg.str();
 }
