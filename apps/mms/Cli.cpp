@@ -149,6 +149,20 @@ void startLongRun(double memoryMb) {
     throw mms::InputError("mms: --memory-limit: the system refused the limit");
 }
 
+// A subcommand that writes one file, which "-o -" sends to standard output: its arguments,
+// the options `add` registers for them, and `run` once the output is claimed.
+template <class Args, class AddOptions>
+Command withOneFile(CLI::App& app, const char* name, const std::string& help,
+                    int (*run)(const Args&), AddOptions add) {
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(name, help);
+  add(cmd, *args);
+  return {cmd, [args, run] {
+            claimStandardOutput({{args->output, "-o"}});
+            return run(*args);
+          }};
+}
+
 // The options that need checking beyond CLI11's before a benchmark starts.
 struct BenchOptions : BenchArgs {
   // By default the portfolio, MMS and the four OMPL planners the benchmarks compare against (all
@@ -273,82 +287,67 @@ Command addCheck(CLI::App& app) {
 }
 
 Command addRender(CLI::App& app) {
-  auto args = std::make_shared<RenderArgs>();
-  RenderArgs& ra = *args;
-  auto* renderCmd = app.add_subcommand(
-      "render", "Draw a scene (and a path, animated) as SVG: start poses green, goal poses red");
-  sceneArg(renderCmd, ra.scene, "Scene file");
-  renderCmd->add_option("PATH", ra.path, "Path file to draw and animate");
-  outputOption(renderCmd, ra.output, "SVG file to write (-: standard output)");
-  renderCmd->add_option("--width", ra.width, "Picture width in pixels")
-      ->capture_default_str()
-      ->check(CLI::Range(50.0, 20000.0));
-  renderCmd->add_option("--ghosts", ra.ghosts, "Faint robot poses drawn along the path")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1000));
-  renderCmd->add_flag("--no-animation", ra.noAnimation, "Leave out the animated robot");
-  return {renderCmd, [args] {
-            claimStandardOutput({{args->output, "-o"}});
-            return render(*args);
-          }};
+  return withOneFile<RenderArgs>(
+      app, "render",
+      "Draw a scene (and a path, animated) as SVG: start poses green, goal poses red", render,
+      [](CLI::App* cmd, RenderArgs& a) {
+        sceneArg(cmd, a.scene, "Scene file");
+        cmd->add_option("PATH", a.path, "Path file to draw and animate");
+        outputOption(cmd, a.output, "SVG file to write (-: standard output)");
+        cmd->add_option("--width", a.width, "Picture width in pixels")
+            ->capture_default_str()
+            ->check(CLI::Range(50.0, 20000.0));
+        cmd->add_option("--ghosts", a.ghosts, "Faint robot poses drawn along the path")
+            ->capture_default_str()
+            ->check(CLI::Range(0, 1000));
+        cmd->add_flag("--no-animation", a.noAnimation, "Leave out the animated robot");
+      });
 }
 
 Command addView(CLI::App& app) {
-  auto args = std::make_shared<ViewArgs>();
-  ViewArgs& wa = *args;
-  auto* viewCmd = app.add_subcommand(
-      "view",
+  return withOneFile<ViewArgs>(
+      app, "view",
       "Write one self-contained HTML file that draws the scene and plays the path (play/pause,\n"
       "time slider, speed, traces, the planner's cells with --save-roadmap paths). Open it in\n"
-      "any browser; FILE.html#t=0.5 opens it half-way through the motion");
-  sceneArg(viewCmd, wa.scene, "Scene file (any format mms reads)");
-  viewCmd->add_option("PATH", wa.path, "Path file to play");
-  outputOption(viewCmd, wa.output, "HTML file to write (-: standard output)");
-  return {viewCmd, [args] {
-            claimStandardOutput({{args->output, "-o"}});
-            return view(*args);
-          }};
+      "any browser; FILE.html#t=0.5 opens it half-way through the motion",
+      view, [](CLI::App* cmd, ViewArgs& a) {
+        sceneArg(cmd, a.scene, "Scene file (any format mms reads)");
+        cmd->add_option("PATH", a.path, "Path file to play");
+        outputOption(cmd, a.output, "HTML file to write (-: standard output)");
+      });
 }
 
 Command addImport(CLI::App& app) {
-  auto args = std::make_shared<ImportArgs>();
-  ImportArgs& ia = *args;
-  auto* importCmd = app.add_subcommand(
-      "import",
+  return withOneFile<ImportArgs>(
+      app, "import",
       "Convert a scene to mms-scene/1: an OMPL.app problem (FILE.cfg and the COLLADA meshes it\n"
       "names) or a discopygal JSON scene. Notes on stderr say what the conversion changed.\n"
-      "(plan, validate, check, render and view read these files directly too)");
-  importCmd->add_option("FILE", ia.input, "OMPL.app .cfg or discopygal .json")->required();
-  outputOption(importCmd, ia.output, "Scene file to write (-: standard output)");
-  quietFlag(importCmd, ia.quiet, "Print nothing on success");
-  importCmd->add_option("--bounds", ia.bounds,
+      "(plan, validate, check, render and view read these files directly too)",
+      importScene, [](CLI::App* cmd, ImportArgs& a) {
+        cmd->add_option("FILE", a.input, "OMPL.app .cfg or discopygal .json")->required();
+        outputOption(cmd, a.output, "Scene file to write (-: standard output)");
+        quietFlag(cmd, a.quiet, "Print nothing on success");
+        cmd->add_option("--bounds", a.bounds,
                         "XMIN,YMIN,XMAX,YMAX: the workspace, instead of the one the file gives "
                         "(discopygal scenes give none: by default the box around obstacles and "
                         "robots, grown by 5 %)");
-  return {importCmd, [args] {
-            claimStandardOutput({{args->output, "-o"}});
-            return importScene(*args);
-          }};
+      });
 }
 
 Command addExport(CLI::App& app) {
-  auto args = std::make_shared<ExportArgs>();
-  ExportArgs& ea = *args;
-  auto* exportCmd = app.add_subcommand(
-      "export",
+  return withOneFile<ExportArgs>(
+      app, "export",
       "Write a scene as discopygal JSON (--to discopygal), or a path as OMPL.app's .path text\n"
-      "(--to ompl-path, one rigid robot)");
-  sceneArg(exportCmd, ea.scene, "Scene file");
-  exportCmd->add_option("PATH", ea.path, "Path file (for --to ompl-path)");
-  exportCmd->add_option("--to", ea.to, "discopygal or ompl-path")
-      ->required()
-      ->check(CLI::IsMember({"discopygal", "ompl-path"}));
-  outputOption(exportCmd, ea.output, "File to write (-: standard output)");
-  quietFlag(exportCmd, ea.quiet, "Print nothing on success");
-  return {exportCmd, [args] {
-            claimStandardOutput({{args->output, "-o"}});
-            return exportScene(*args);
-          }};
+      "(--to ompl-path, one rigid robot)",
+      exportScene, [](CLI::App* cmd, ExportArgs& a) {
+        sceneArg(cmd, a.scene, "Scene file");
+        cmd->add_option("PATH", a.path, "Path file (for --to ompl-path)");
+        cmd->add_option("--to", a.to, "discopygal or ompl-path")
+            ->required()
+            ->check(CLI::IsMember({"discopygal", "ompl-path"}));
+        outputOption(cmd, a.output, "File to write (-: standard output)");
+        quietFlag(cmd, a.quiet, "Print nothing on success");
+      });
 }
 
 Command addLab(CLI::App& app) {

@@ -270,6 +270,25 @@ void subtractUnion(PolygonSet& free, const std::vector<PolygonWithHoles>& sums) 
   }
 }
 
+// `p` translated by the exact (dx, dy), point by point from exact coordinates rather than by
+// lazy translations: the overlay's predicates then fall back on exact values at hand instead
+// of evaluating a construction per point.
+template <class ExactNumber>
+PolygonWithHoles translated(const PolygonWithHoles& p, const ExactNumber& dx,
+                            const ExactNumber& dy) {
+  auto move = [&](const Polygon& poly) {
+    Polygon out;
+    for (const Point& v : poly.vertices()) {
+      const auto& e = CGAL::exact(v);
+      out.push_back(exactPoint(e.x() + dx, e.y() + dy));
+    }
+    return out;
+  };
+  PolygonWithHoles moved(move(p.outer_boundary()));
+  for (auto h = p.holes_begin(); h != p.holes_end(); ++h) moved.add_hole(move(*h));
+  return moved;
+}
+
 }  // namespace
 
 std::unique_ptr<Slice::Impl::Exact> Slice::Impl::exactWithout(
@@ -334,22 +353,8 @@ std::vector<PolygonWithHoles> Slice::Impl::heldSums(const std::vector<MovedShape
   for (const MovedShape& m : shapes) {
     if (!sumReaches(boundingBox(m.placed()), negBox, regionBox)) continue;
     checkpoint();
-    // Points from exact coordinates, not lazy translations: the overlay's predicates then
-    // fall back on exact values at hand instead of evaluating a construction per point.
     const std::shared_ptr<const PolygonWithHoles> sum = movedSum(m);
-    const PolygonWithHoles& atOrigin = *sum;
-    const auto dx = CGAL::exact(FT(m.offset.x)), dy = CGAL::exact(FT(m.offset.y));
-    auto move = [&](const Polygon& poly) {
-      Polygon out;
-      for (const Point& v : poly.vertices()) {
-        const auto& e = CGAL::exact(v);
-        out.push_back(exactPoint(e.x() + dx, e.y() + dy));
-      }
-      return out;
-    };
-    PolygonWithHoles moved(move(atOrigin.outer_boundary()));
-    for (auto h = atOrigin.holes_begin(); h != atOrigin.holes_end(); ++h) moved.add_hole(move(*h));
-    sums.push_back(std::move(moved));
+    sums.push_back(translated(*sum, CGAL::exact(FT(m.offset.x)), CGAL::exact(FT(m.offset.y))));
   }
   return sums;
 }
@@ -474,22 +479,10 @@ Slice::Slice(const Slice& carrier, const Slice& attached, Vec2 offset, PointLoca
   const auto [cs, sn] = angle_.cosSin();
   const FT ox(offset.x), oy(offset.y);
   const auto dx = CGAL::exact(-(cs * ox - sn * oy)), dy = CGAL::exact(-(sn * ox + cs * oy));
-  auto move = [&](const Polygon& poly) {
-    Polygon out;
-    for (const Point& v : poly.vertices()) {
-      const auto& e = CGAL::exact(v);
-      out.push_back(exactPoint(e.x() + dx, e.y() + dy));
-    }
-    return out;
-  };
   std::vector<PolygonWithHoles> faces;
   attached.impl_->exactPart->free.polygons_with_holes(std::back_inserter(faces));
   std::vector<PolygonWithHoles> movedFaces;
-  for (const PolygonWithHoles& f : faces) {
-    PolygonWithHoles m(move(f.outer_boundary()));
-    for (auto h = f.holes_begin(); h != f.holes_end(); ++h) m.add_hole(move(*h));
-    movedFaces.push_back(std::move(m));
-  }
+  for (const PolygonWithHoles& f : faces) movedFaces.push_back(translated(f, dx, dy));
   // An aggregated join: faces of a polygon set may touch at vertices, which insert() forbids.
   PolygonSet moved;
   moved.join(movedFaces.begin(), movedFaces.end());

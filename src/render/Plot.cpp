@@ -72,6 +72,17 @@ void drawSeries(std::ostringstream& svg, const Series& s, size_t i, const Usable
       << "\" y=\"" << ly + 4 << "\">" << escapeMarkup(s.name) << "</text>\n";
 }
 
+// The document's opening: its size, a white ground and the title; numbers to a tenth of a pixel.
+void openSvg(std::ostringstream& svg, const PlotSpec& spec) {
+  svg << std::fixed << std::setprecision(1);
+  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+      << "width=\"" << spec.width << "\" height=\"" << spec.height << "\" viewBox=\"0 0 "
+      << spec.width << " " << spec.height << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      << "<text x=\"" << spec.width / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">"
+      << escapeMarkup(spec.title) << "</text>\n";
+}
+
 }  // namespace
 
 const char* seriesColour(size_t i) {
@@ -121,13 +132,7 @@ std::string linePlot(const PlotSpec& spec, const std::vector<Series>& series) {
   };
 
   std::ostringstream svg;
-  svg << std::fixed << std::setprecision(1);
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
-      << "width=\"" << spec.width << "\" height=\"" << spec.height << "\" viewBox=\"0 0 "
-      << spec.width << " " << spec.height << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << spec.width / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">"
-      << escapeMarkup(spec.title) << "</text>\n";
+  openSvg(svg, spec);
   for (double t : ticks(x0, x1, spec.logX)) {
     svg << "<line x1=\"" << fx(t) << "\" y1=\"" << top << "\" x2=\"" << fx(t) << "\" y2=\""
         << top + ph << "\" stroke=\"#eee\"/>\n<text x=\"" << fx(t) << "\" y=\"" << top + ph + 16
@@ -243,13 +248,7 @@ std::string categoryChart(const PlotSpec& spec, const std::vector<Category>& cs,
   const std::vector<double> x = categoryCentres(cs, CategoryFrame::left, f.plotWidth(), slot);
   const double half = std::min(0.32 * slot, 18.0);
   std::ostringstream svg;
-  svg << std::fixed << std::setprecision(1);
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
-      << "width=\"" << spec.width << "\" height=\"" << spec.height << "\" viewBox=\"0 0 "
-      << spec.width << " " << spec.height << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << spec.width / 2 << "\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">"
-      << escapeMarkup(spec.title) << "</text>\n";
+  openSvg(svg, spec);
   const double left = CategoryFrame::left, top = CategoryFrame::top, pw = f.plotWidth(),
                ph = f.plotHeight();
   for (double t : ticks(lo, hi, spec.logY))
