@@ -1,5 +1,4 @@
-// The planner seam: the registry, declared parameters, one result type, run summaries, and the
-// round loop every MMS planner runs.
+// The planner seam: the registry, declared parameters, one result type.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -10,7 +9,6 @@
 #include "mms/Errors.h"
 #include "mms/Io.h"
 #include "mms/Planner.h"
-#include "planner/Rounds.h"
 #include "scenarios/Generators.h"
 
 using namespace mms;
@@ -127,138 +125,6 @@ TEST(Registry, OneRobotMmsAnswersANewQueryOnItsRoadmap) {
   EXPECT_FALSE(makePlanner("rrtconnect", s)->setQuery(startConfig(back), goalConfig(back)));
 }
 
-TEST(RunSummary, WritesAndReadsBackEveryField) {
-  PlanResult r;
-  r.status = PlanStatus::Found;
-  r.waypoints = {{0, 0, 0}, {1, 2, 3}};
-  r.certificate.translation = 2.5;
-  r.certificate.rotation = 3;
-  r.certificate.minClearance = 0.125;
-  r.parameters = {{"n_theta", 16}, {"expand_share", 0.5}};
-  r.stats.seconds = 0.75;
-  r.stats.rounds = 2;
-  r.stats.graphNodes = 10;
-  r.stats.graphEdges = 20;
-  r.stats.manifoldsBuilt = 30;
-  r.stats.manifoldsUsed = 4;
-  r.stats.pathCells = 5;
-  r.stats.rejectedPaths = 1;
-  r.stats.counts = {{"slices", 7}};
-  r.stats.phases = {{"search", 0.25}};
-  const RunSummary back = runSummaryFromJson(
-      nlohmann::json::parse(toJson(summarize("s.json", "mms", 9, 60, r)).dump()));
-  EXPECT_EQ(back.scene, "s.json");
-  EXPECT_EQ(back.planner, "mms");
-  EXPECT_EQ(back.seed, 9u);
-  EXPECT_EQ(back.timeLimit, 60);
-  EXPECT_EQ(back.status, PlanStatus::Found);
-  EXPECT_EQ(back.parameters, r.parameters);
-  EXPECT_EQ(back.waypoints, 2u);
-  EXPECT_EQ(back.certificate.translation, 2.5);
-  EXPECT_EQ(back.certificate.minClearance, 0.125);
-  EXPECT_EQ(back.stats.seconds, 0.75);
-  EXPECT_EQ(back.stats.rounds, 2u);
-  EXPECT_EQ(back.stats.graphEdges, 20u);
-  EXPECT_EQ(back.stats.manifoldsBuilt, 30u);
-  EXPECT_EQ(back.stats.manifoldsUsed, 4u);
-  EXPECT_EQ(back.stats.rejectedPaths, 1u);
-  EXPECT_EQ(back.stats.counts, r.stats.counts);
-  EXPECT_EQ(back.stats.phases, r.stats.phases);
-  EXPECT_THROW(runSummaryFromJson(nlohmann::json{{"format", "other"}}), std::runtime_error);
-  EXPECT_THROW(runSummaryFromJson(nlohmann::json("mms-run/1")), std::runtime_error);
-}
-
-namespace {
-
-struct LoopStats {
-  size_t rounds = 0, rejectedPaths = 0;
-  double searchSeconds = 0, motionSeconds = 0, certifySeconds = 0;
-};
-
-// A manifold of `cells` cells that meets nothing: the loop's graph needs nodes, not geometry.
-class Cells final : public Manifold {
- public:
-  explicit Cells(size_t cells) : cells_(cells) {}
-  const ManifoldFamily& family() const override { return kFamily; }
-  size_t cellCount() const override { return cells_; }
-  long locate(const Config&) const override { return -1; }
-  std::optional<std::vector<Config>> motion(size_t, const Config&, const Config&) const override {
-    return std::nullopt;
-  }
-
- private:
-  static constexpr ManifoldFamily kFamily{"cells"};
-  size_t cells_;
-};
-
-Roadmap roadmapOfCells(size_t cells) {
-  Roadmap r;
-  r.add(std::make_unique<Cells>(cells), 0, 0);
-  return r;
-}
-
-}  // namespace
-
-// A chain of cells 0 - 1 - ... - 5 that grows one edge per manifold: the search runs as soon
-// as 0 and 5 connect; a refused candidate completes the round before the next search; a
-// complete round doubles the target.
-TEST(Rounds, SearchEarlyCompleteTheRoundAfterARefusalThenDouble) {
-  Roadmap g = roadmapOfCells(6);
-  size_t built = 0, target = 2, searches = 0, refusals = 0;
-  std::vector<size_t> builtAtSearch;
-  RoundHooks h;
-  h.growing = [&] { return built < target; };
-  h.complete = [&] { return built >= target; };
-  h.grow = [&] {
-    if (built < 5) g.addEdge(built, built + 1);
-    ++built;
-  };
-  h.motion = [&](const std::vector<size_t>& nodes) {
-    CertifiedMotion m;
-    builtAtSearch.push_back(built);
-    m.ok = ++searches > 1;  // the first candidate is refused
-    m.waypoints = {Config(nodes.size(), 0.0)};
-    return m;
-  };
-  h.refused = [&] { ++refusals; };
-  h.next = [&] {
-    target *= 2;
-    return true;
-  };
-  LoopStats stats;
-  const RoundsOutcome o = runRounds(h, g, 0, 5, Termination(10), stats);
-  ASSERT_EQ(o.end, RoundsOutcome::End::Found);
-  EXPECT_EQ(o.nodes, (std::vector<size_t>{0, 1, 2, 3, 4, 5}));
-  // Rounds of 2, 4, 8: connected after 5 manifolds (round 3), refused, the round completed to
-  // 8, then searched again.
-  EXPECT_EQ(builtAtSearch, (std::vector<size_t>{5, 8}));
-  EXPECT_EQ(stats.rounds, 3u);
-  EXPECT_EQ(stats.rejectedPaths, 1u);
-  EXPECT_EQ(refusals, 1u);
-}
-
-TEST(Rounds, GiveUpAndStop) {
-  const Roadmap g = roadmapOfCells(2);
-  size_t built = 0, target = 1, rounds = 0;
-  RoundHooks h;
-  h.growing = [&] { return built < target; };
-  h.complete = [&] { return built >= target; };
-  h.grow = [&] { ++built; };
-  h.motion = [](const std::vector<size_t>&) { return CertifiedMotion{}; };
-  h.next = [&] {
-    target *= 2;
-    return ++rounds < 3;  // a budget of rounds
-  };
-  LoopStats stats;
-  EXPECT_EQ(runRounds(h, g, 0, 1, Termination(10), stats).end, RoundsOutcome::End::NotFound);
-  EXPECT_EQ(stats.rounds, 3u);
-  EXPECT_EQ(built, 4u);
-  std::atomic<bool> cancel{true};
-  h.next = [] { return true; };
-  EXPECT_EQ(runRounds(h, g, 0, 1, Termination(10, &cancel), stats).end,
-            RoundsOutcome::End::Cancelled);
-}
-
 TEST(Registry, PlanOptionsComeFromTheDeclarations) {
   TempDir dir;
   const std::string scene = quote(scenario("one-robot/bar-slot.json"));
@@ -283,35 +149,6 @@ TEST(Registry, PlanOptionsComeFromTheDeclarations) {
   const RunSummary s = runSummaryFromJson(nlohmann::json::parse(readFile(stats)));
   EXPECT_EQ(s.status, PlanStatus::Found);
   EXPECT_EQ(s.parameters.at("n_lines"), 64);
-}
-
-// The public API's files: a result written as a path file reads back to the same waypoints,
-// with the planner's parameters and statistics, and `mms check` certifies it.
-TEST(PublicApi, PathFilesRoundTripAndCertify) {
-  TempDir dir;
-  const std::string sceneFile = scenario("one-robot/bar-slot.json");
-  std::vector<std::string> notes;
-  const Scene s = readSceneFile(sceneFile, &notes);
-  EXPECT_TRUE(notes.empty());
-  const PlanResult r = makePlanner(kDefaultPlanner, s)->solve(Termination(planSeconds(20)));
-  ASSERT_TRUE(r.found());
-  const std::string file = dir.path("p.json");
-  writePathFile(s, r, kDefaultPlanner, 1, file);
-  EXPECT_EQ(readPathFile(file, s), r.waypoints);
-  const nlohmann::json j = nlohmann::json::parse(readFile(file));
-  EXPECT_EQ(j["planner"], kDefaultPlanner);
-  // The portfolio's winner names itself, with its parameters.
-  if (j["statistics"]["solved_by"] == "mms") {
-    EXPECT_EQ(j["parameters"]["n_theta"], 16);
-  } else {
-    EXPECT_EQ(j["statistics"]["solved_by"], "rrtconnect");
-    EXPECT_EQ(j["parameters"]["simplify"], 0);
-  }
-  EXPECT_EQ(j["statistics"]["graph_nodes"], r.stats.graphNodes);
-  EXPECT_FALSE(j["statistics"].contains("seconds"));  // same seed, same file
-  EXPECT_EQ(runMms("check " + quote(sceneFile) + " " + quote(file)).code, 0);
-  EXPECT_THROW(readPathFile(dir.file("bad.json", "{}"), s), InputError);
-  EXPECT_THROW(readSceneFile(dir.file("bad-scene.json", "[1]")), InputError);
 }
 
 // A run cut short leaves a two-robot planner's base slices and start and goal subspaces part

@@ -1,0 +1,130 @@
+// The HTML viewer (mms view): the roadmap a path file keeps reaches the page, and a real
+// headless Chromium draws the robot where the slider says.
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "Support.h"
+#include "io/PathIO.h"
+#include "io/SceneIO.h"
+#include "render/HtmlViewer.h"
+
+namespace mms {
+namespace {
+
+using test::quote;
+using test::runMms;
+using test::TempDir;
+
+// Headless Chromium screenshots are read back as pixels.
+struct Rgb {
+  int r, g, b;
+};
+
+std::vector<Rgb> readPng(const std::string& file, int& w, int& h) {
+  png_image img{};
+  img.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&img, file.c_str())) return {};
+  img.format = PNG_FORMAT_RGB;
+  std::vector<unsigned char> buf(PNG_IMAGE_SIZE(img));
+  if (!png_image_finish_read(&img, nullptr, buf.data(), 0, nullptr)) return {};
+  w = int(img.width), h = int(img.height);
+  std::vector<Rgb> px(size_t(w) * size_t(h));
+  for (size_t i = 0; i < px.size(); ++i) px[i] = {buf[3 * i], buf[3 * i + 1], buf[3 * i + 2]};
+  return px;
+}
+
+TEST(View, SavedRoadmapReachesThePathFileAndThePage) {
+  TempDir dir;
+  const std::string scene = test::scenario("one-robot/bar-slot.json");
+  const std::string path = dir.path("p.json"), html = dir.path("v.html");
+  auto plan = runMms("plan " + quote(scene) + " --planner mms -q --save-roadmap -o " + quote(path));
+  ASSERT_EQ(plan.code, 0) << plan.err;
+  const nlohmann::json saved = nlohmann::json::parse(test::readFile(path));
+  ASSERT_TRUE(saved.contains("roadmap"));
+  EXPECT_GT(saved["roadmap"]["cells"].size(), 0u);
+  EXPECT_GT(saved["roadmap"]["points"].size(), 0u);
+  // Every cell ring is a polygon of [x, y] points.
+  for (const auto& cell : saved["roadmap"]["cells"])
+    for (const auto& ring : cell) {
+      EXPECT_GE(ring.size(), 3u);
+      for (const auto& p : ring) EXPECT_EQ(p.size(), 2u);
+    }
+  ASSERT_EQ(runMms("view " + quote(scene) + " " + quote(path) + " -o " + quote(html)).code, 0);
+  EXPECT_NE(test::readFile(html).find("\"roadmap\":{\"cells\""), std::string::npos);
+  auto two = runMms("plan " + quote(test::scenario("two-robots/niche-swap.json")) +
+                    " -q --save-roadmap -o " + quote(dir.path("two.json")));
+  EXPECT_EQ(two.code, 2) << "one-robot scenes only";
+  EXPECT_NE(two.err.find("--save-roadmap"), std::string::npos) << two.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path("two.json")));
+}
+
+TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {
+  const auto chromium = test::runCommand("command -v chromium");
+  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  TempDir dir;
+  // A square robot translating from left to right across an empty room, then turning.
+  Scene s;
+  s.name = "viewer test";
+  s.bounds = {0, 0, 20, 10};
+  s.obstacles.push_back({{9, 8}, {11, 8}, {11, 10}, {9, 10}});
+  Robot r;
+  r.name = "box";
+  r.shape = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  r.start = {3, 3, 0};
+  r.goal = {17, 3, 0};
+  s.robots.push_back(r);
+  const std::string sceneFile = dir.path("s.json");
+  saveScene(s, sceneFile);
+  Path p;
+  p.waypoints = {{3, 3, 0}, {17, 3, 0}};
+  const std::string pathFile = dir.path("p.json");
+  savePath(p, s, pathFile);
+  const std::string html = dir.path("v.html");
+  auto v = runMms("view " + quote(sceneFile) + " " + quote(pathFile) + " -o " + quote(html));
+  ASSERT_EQ(v.code, 0) << v.err;
+  const std::string page = test::readFile(html);
+  for (const char* external : {"http://", "https://", " src=", " href=", "import("})
+    EXPECT_EQ(page.find(external), std::string::npos)
+        << "the page must be self-contained: " << external;
+
+  auto shot = [&](double t, const std::string& png) {
+    const std::string cmd =
+        "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
+        "--force-device-scale-factor=1 --window-size=820,500 "
+        "--virtual-time-budget=3000 --user-data-dir=" +
+        quote(dir.path("profile")) + " --screenshot=" + quote(png) + " " +
+        quote("file://" + html + "#t=" + std::to_string(t));
+    auto c = test::runCommand(cmd);
+    ASSERT_EQ(c.code, 0) << c.err;
+  };
+  const Rgb robot{0xe8, 0x71, 0x0a};
+  auto isRobot = [&](const std::vector<Rgb>& px, int w, Vec2 at) {
+    const Rgb c = px[size_t(std::lround(at.y)) * size_t(w) + size_t(std::lround(at.x))];
+    return std::abs(c.r - robot.r) < 24 && std::abs(c.g - robot.g) < 24 &&
+           std::abs(c.b - robot.b) < 24;
+  };
+  for (double t : {0.0, 0.5, 1.0}) {
+    const std::string png = dir.path("shot.png");
+    shot(t, png);
+    int w = 0, h = 0;
+    const auto px = readPng(png, w, h);
+    ASSERT_FALSE(px.empty()) << "unreadable screenshot";
+    const Vec2 expected = viewerPixel(s, {3 + 14 * t, 3});
+    ASSERT_LT(expected.y, h);
+    EXPECT_TRUE(isRobot(px, w, expected)) << "robot at t = " << t;
+    // Where it is not: 4 units left and right of it, unless that is where it is.
+    for (double dx : {-4.0, 4.0}) {
+      const double x = 3 + 14 * t + dx;
+      if (x > 0 && x < 20) {
+        EXPECT_FALSE(isRobot(px, w, viewerPixel(s, {x, 3}))) << t << dx;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mms
