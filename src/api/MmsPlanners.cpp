@@ -1,6 +1,7 @@
 // "mms" behind the planner seam: MmsPlanner for one robot, TwoRobotPlanner for two,
 // KRobotPlanner for three and more, chosen by the scene. Parameters are declared here once, with
 // the defaults of the settings structs.
+#include <algorithm>
 #include <memory>
 #include <type_traits>
 
@@ -46,6 +47,14 @@ PlanStatistics commonStatistics(const Stats& s, const SubspaceStats& m,
   return p;
 }
 
+// `phase` placed right after the phase named `before`.
+void insertAfter(std::vector<std::pair<std::string, double>>& phases, const std::string& before,
+                 std::pair<std::string, double> phase) {
+  const auto at =
+      std::find_if(phases.begin(), phases.end(), [&](const auto& p) { return p.first == before; });
+  phases.insert(at == phases.end() ? at : at + 1, std::move(phase));
+}
+
 PlanStatistics statisticsOf(const MmsStats& s) {
   const SubspaceStats& m = s.manifolds;
   return commonStatistics(s, m, {{"slices", m.sliceSeconds}, {"lines", m.lineSeconds}});
@@ -75,7 +84,7 @@ PlanStatistics statisticsOf(const TwoRobotStats& s) {
                                      {"compound_lines", pair.lines},
                                      {"cross_edges", s.crossEdges},
                                      {"path_subspaces", s.pathSubspaces}});
-  p.phases.insert(p.phases.begin() + 6, {"cross", s.crossSeconds});  // after connect
+  insertAfter(p.phases, "connect", {"cross", s.crossSeconds});
   return p;
 }
 
@@ -89,9 +98,10 @@ PlanStatistics statisticsOf(const KRobotStats& s) {
                                      {"tuples", s.tuples},
                                      {"greedy_moves", s.greedyMoves},
                                      {"screened_poses", s.screenedPoses},
+                                     {"narrow_arc_slices", m.localSlices},
                                      {"cross_edges", s.crossEdges},
                                      {"path_subspaces", s.pathSubspaces}});
-  p.phases.insert(p.phases.begin() + 4, {"cross", s.crossSeconds});  // after connect
+  insertAfter(p.phases, "connect", {"cross", s.crossSeconds});
   return p;
 }
 
@@ -130,8 +140,8 @@ std::vector<ParamSpec> mmsParams() {
   };
   return {
       {"threads", Type::Integer, 0, 256, double(one.threads),
-       "Threads that build slices (0: all cores; three robots or more: one); same seed, same "
-       "path whatever the number (default " +
+       "Threads that build slices (0: all cores); same seed, same path whatever the number "
+       "(default " +
            formatNumber(one.threads) + ")"},
       {"n-theta", Type::Integer, 1, 1e6, double(one.nTheta),
        "Angles sampled per robot (n_theta). One robot: slices in the first round, doubling each "

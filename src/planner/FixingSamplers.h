@@ -15,17 +15,15 @@
 #include "graph/Roadmap.h"
 #include "manifolds/Slice.h"
 #include "mms/Termination.h"
+#include "planner/Subspace.h"
 #include "util/Random.h"
 
 namespace mms {
 
 /// A robot held at a pose: the subspace in which the other robot moves.
-struct Fixing {
+struct Fixing : Placement {
   size_t robot = 0;
-  Pose pose;
-  long angle = -1;        // index into the robot's angle set, or -1
-  long specialLine = -1;  // -1, or 0 / 1: start / goal position (lines 0 and 1 of every subspace)
-  long parent = -1;       // the subspace whose cell it was drawn from, or -1
+  long parent = -1;  // the subspace whose cell it was drawn from, or -1
 };
 
 /// What a sampler may read of the two-robot planner, and the one thing it may do: hold.

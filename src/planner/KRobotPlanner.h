@@ -23,27 +23,19 @@
 // robust path's neighbourhood with probability going to 1; each step is exact, and every path
 // returned is certified.
 #include <functional>
-#include <map>
-#include <memory>
-#include <string>
+#include <optional>
+#include <utility>
 #include <vector>
 
-#include "check/PathChecker.h"
-#include "planner/MmsPlanner.h"
-#include "planner/Subspace.h"
+#include "planner/HeldRobotPlanner.h"
 
 namespace mms {
 
-struct KRobotSettings {
-  uint64_t seed = 1;
-  // Angles of robot r: nTheta + r besides its start and goal angles, in all subspaces where it
-  // moves. Not as few as two robots' (TwoRobotSettings::nTheta): on three robots in a niche
-  // corridor (seeds 1-10, one robot rigid or translating, 12 planner seeds) 4 and 8 took 0.45
-  // and 0.6 of the median time, but 1.03 and 0.82 of the total: runs that needed more tuples
-  // waited for the angles, up to 7.8 and 2.4 s where 16 took at most 0.8 s.
-  size_t nTheta = 16;
-  size_t nLines = 128;  // random lines per subspace
-  size_t nTuples = 8;   // tuples grown in the first round; doubles every round, with the angles
+struct KRobotSettings : HeldRobotSettings {
+  // More angles than two robots' (TwoRobotSettings): runs that needed more tuples waited for
+  // the angles (docs/planner.md).
+  KRobotSettings() { nTheta = 16; }
+  size_t nTuples = 8;  // tuples grown in the first round; doubles every round, with the angles
   // Share of growth points drawn near a vertex of their cell (a robot tucked into a corner, out
   // of the others' way); the rest uniform in the cell.
   double cornerShare = 0.5;
@@ -51,88 +43,49 @@ struct KRobotSettings {
   // robot cuts no passage of any other robot at its start angle (one overlay per robot), else
   // the last.
   size_t screenCandidates = 16;
-  size_t maxRounds = 0;  // 0: only the time limit stops it
-  unsigned threads = 1;  // accepted for the seam; overlays are built on one thread
 };
 
-struct KRobotStats {
-  size_t rounds = 0, subspaces = 0, tuples = 0, greedyMoves = 0, crossEdges = 0;
-  size_t screenedPoses = 0;  // growth points screened by an overlay, in "overlays"
-  size_t graphNodes = 0, graphEdges = 0, pathCells = 0, rejectedPaths = 0;
-  size_t pathManifolds = 0, pathSubspaces = 0;
-  std::string noPath;  // why no path exists, when proved (PlanStatistics::noPath)
-  SubspaceStats manifolds;
-  double baseSliceSeconds = 0, crossSeconds = 0, searchSeconds = 0, motionSeconds = 0,
-         certifySeconds = 0;
-  double totalSeconds = 0;
+struct KRobotStats : HeldRobotStats {
+  size_t tuples = 0, greedyMoves = 0;
 };
 
-struct KRobotResult {
-  PlanStatus status = PlanStatus::NotFound;
-  std::vector<Config> waypoints;  // all robots' (x, y, theta), certified when Found
-  PathCheckResult certificate;
-  KRobotStats stats;
-};
+using KRobotResult = HeldRobotResult<KRobotStats>;
 
-class KRobotPlanner {
+/// The hold policy for k robots: tuples grown from reached cells, and greedy moves to the
+/// other side.
+class KRobotPlanner : public HeldRobotPlanner {
  public:
   explicit KRobotPlanner(const Scene& scene, KRobotSettings settings = {});
-  ~KRobotPlanner();
+  ~KRobotPlanner() override;
 
   KRobotResult solve(const Termination& stop,
                      const std::function<void(const KRobotStats&)>& progress = {});
 
  private:
-  /// Where a tuple puts one robot: a pose at an angle of its set (a slice of every subspace
-  /// where it moves), or its start or goal pose (lines 0 and 1 of those subspaces).
-  struct Anchor {
-    Pose pose;
-    long angle = -1;  // index into the robot's angle set, or -1
-    long line = -1;   // 0 / 1: start / goal position, or -1
-  };
-  using Tuple = std::vector<Anchor>;
+  using Tuple = std::vector<Placement>;
 
-  KRobotResult solveRounds(const Termination& stop,
-                           const std::function<void(const KRobotStats&)>& progress);
-  void addAngles(size_t robot, const std::vector<double>& thetas, const Termination& stop);
+  // The hold policy (HeldRobotPlanner)
+  bool placeEnds(const Termination& stop) override;
+  void endsPlaced(const Termination& stop) override;
+  bool growing() override;
+  bool roundComplete() override { return grown_ >= grownAtRoundStart_ + target_; }
+  void growStep(const Termination& stop) override;
+  void nextTargets(bool fixingsGrow) override;
+
   size_t subspaceFor(size_t moving, const Tuple& t, const Termination& stop);
   long existing(size_t moving, const Tuple& t) const;
-  long nodeFor(const Subspace& sub, const Anchor& a) const;
   void join(const Tuple& t);
-  void grow(const Termination& stop);
+  std::optional<std::pair<size_t, Placement>> growthPoint();
   void towardsOtherSide(Tuple t, bool fromStart, const Termination& stop);
-  bool leavesRoom(size_t robot, const Pose& p);
-  bool reached(size_t node) const;
-  size_t movingAt(size_t node) const;  // the robot that moves in the node's subspace
-  bool rescanReached();
-  void collectCells(size_t firstNode);
-  KRobotResult finish(KRobotResult r, PlanStatus status);
+  bool anyReached();
 
-  Scene scene_;
-  KRobotSettings settings_;
-  CollisionChecker checker_;
-  Scene contactScene_;  // robots shrunk as the checker sees them: manifolds are built for them
-  Random rng_;
-  size_t k_;
-  std::vector<bool> translates_;
-  std::vector<std::unique_ptr<SliceWorld>> worlds_;
-  std::vector<std::unique_ptr<AngleSequence>> angles_;
-  std::vector<size_t> sequenceAngles_;    // per robot: base slices from angles_ (after start, goal)
-  std::vector<std::vector<Slice>> base_;  // per robot: its slice at each angle, obstacles only
-  std::vector<std::unique_ptr<Subspace>> subspaces_;
-  std::vector<Tuple> tuples_;  // tuples_[i]: the tuple subspaces_[i] was made for
-  std::map<std::vector<double>, size_t> byHeld_;  // (moving, held poses) -> subspace
-  Tuple start_, goal_;
-  Roadmap roadmap_;
-  std::vector<size_t> cells_;  // slice-cell nodes at shared angles
-  // Per moving robot: those connected to the start or goal. Growth draws the robot first, so a
-  // robot with few angles (one that translates has one) is not drawn in proportion to its cells.
-  std::vector<std::vector<size_t>> reached_;
-  size_t reachedScan_ = 0;
-  size_t grown_ = 0;  // growth steps taken (a step may fail to draw a point)
-  long from_ = -1, to_ = -1;
+  KRobotSettings hold_;
   KRobotStats stats_;
-  Stopwatch clock_;
+  std::vector<Tuple> tuples_;  // tuples_[i]: the tuple subspaces_[i] was made for
+  Tuple start_, goal_;
+  size_t grown_ = 0;  // growth steps taken (a step may fail to draw a point)
+  size_t grownAtRoundStart_ = 0;
+  size_t target_ = 0;  // growth steps this round
 };
 
 }  // namespace mms

@@ -19,6 +19,14 @@
 
 namespace mms {
 
+/// Where a robot is held: a pose at an angle of its set (a slice of every subspace where it
+/// moves), or its start or goal pose (lines 0 and 1 of those subspaces).
+struct Placement {
+  Pose pose;
+  long angleIndex = -1;  // into the robot's angle set, or -1
+  long line = -1;        // 0 / 1: start / goal position, or -1
+};
+
 struct SubspaceStats {
   size_t slices = 0, lines = 0, sliceCells = 0, lineArcs = 0;
   size_t localSlices = 0;  // of the slices: those at angles of one subspace alone

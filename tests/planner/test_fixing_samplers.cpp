@@ -34,7 +34,7 @@ class RecordingHost final : public FixingHost {
   const Box& cellBox(size_t) const override { return scene_.bounds; }
   const Slice& sliceOf(size_t) const override { return base_.front(); }
   Fixing fixingAt(size_t robot, size_t angle, Vec2 p, long parent) const override {
-    return {robot, {p.x, p.y, base_[angle].theta()}, long(angle), -1, parent};
+    return {{{p.x, p.y, base_[angle].theta()}, long(angle), -1}, robot, parent};
   }
   size_t hold(const Fixing& f, const Termination&) override {
     held.push_back(f);

@@ -16,9 +16,10 @@ using namespace mms::test;
 namespace {
 
 KRobotResult plan(const Scene& s, uint64_t seed, size_t screen = KRobotSettings{}.screenCandidates,
-                  size_t maxRounds = 0) {
+                  size_t maxRounds = 0, unsigned threads = 1) {
   KRobotSettings st;
   st.seed = seed;
+  st.threads = threads;
   st.screenCandidates = screen;
   st.maxRounds = maxRounds;
   return KRobotPlanner(s, st).solve(Termination(planSeconds(60)));
@@ -100,6 +101,20 @@ TEST(KRobots, SameSeedSamePath) {
   EXPECT_GE(a.stats.rounds, 2u);
   EXPECT_GT(a.stats.tuples, 0u);
   EXPECT_EQ(a.waypoints, b.waypoints);
+}
+
+// The core shared with two robots builds overlays on several threads and slices at narrow arcs
+// the held robots make: the path does not depend on the thread count, and the corridor's niche
+// (the waiting robot's narrow turns) gets such slices.
+TEST(KRobots, ThreadsChangeNothingAndNarrowArcsGetSlices) {
+  const Scene s = nicheThreeScene(1);
+  const KRobotResult one = plan(s, 3), two = plan(s, 3, KRobotSettings{}.screenCandidates, 0, 2);
+  ASSERT_EQ(one.status, PlanStatus::Found);
+  EXPECT_EQ(one.waypoints, two.waypoints);
+  EXPECT_EQ(one.stats.subspaces, two.stats.subspaces);
+  size_t local = 0;
+  for (uint64_t seed = 1; seed <= 3; ++seed) local += plan(s, seed).stats.manifolds.localSlices;
+  EXPECT_GT(local, 0u);
 }
 
 // Where the robots can go one after the other, the greedy moves from the start alone solve it:
