@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <regex>
+#include <type_traits>
 
 #include "Commands.h"
 #include "mms/Errors.h"
@@ -102,6 +103,19 @@ CLI::Option* outputOption(CLI::App* cmd, std::string& v, const std::string& help
 CLI::Option* quietFlag(CLI::App* cmd, bool& v, const std::string& help) {
   return cmd->add_flag("-q,--quiet", v, help);
 }
+// A scene and, optionally, a path drawn on it or checked against it.
+CLI::Option* sceneAndPath(CLI::App* cmd, std::string& scene, std::string& path,
+                          const std::string& sceneHelp, const std::string& pathHelp) {
+  sceneArg(cmd, scene, sceneHelp);
+  return cmd->add_option("PATH", path, pathHelp);
+}
+
+// The file a conversion writes, and silence on success.
+void convertedOutput(CLI::App* cmd, std::string& output, bool& quiet, const std::string& what) {
+  outputOption(cmd, output, what + " to write (-: standard output)");
+  quietFlag(cmd, quiet, "Print nothing on success");
+}
+
 CLI::Option* memoryLimitOption(CLI::App* cmd, double& v, const std::string& help) {
   return cmd->add_option("--memory-limit", v, help)->capture_default_str()->check(memoryLimitMb);
 }
@@ -149,18 +163,30 @@ void startLongRun(double memoryMb) {
     throw mms::InputError("mms: --memory-limit: the system refused the limit");
 }
 
-// A subcommand that writes one file, which "-o -" sends to standard output: its arguments,
-// the options `add` registers for them, and `run` once the output is claimed.
-template <class Args, class AddOptions>
-Command withOneFile(CLI::App& app, const char* name, const std::string& help,
-                    int (*run)(const Args&), AddOptions add) {
+// A subcommand: its arguments, the options `add` registers for them, and `run` once it is the
+// one given. What `add` returns (an option to ask whether it was given, the planners'
+// parameters) is passed to `run` after the arguments.
+template <class Args, class Add, class Run>
+Command command(CLI::App& app, const char* name, const std::string& help, Add add, Run run) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(name, help);
-  add(cmd, *args);
-  return {cmd, [args, run] {
-            claimStandardOutput({{args->output, "-o"}});
-            return run(*args);
-          }};
+  if constexpr (std::is_void_v<std::invoke_result_t<Add, CLI::App*, Args&>>) {
+    add(cmd, *args);
+    return {cmd, [args, run] { return run(*args); }};
+  } else {
+    auto extra = add(cmd, *args);
+    return {cmd, [args, run, extra] { return run(*args, extra); }};
+  }
+}
+
+// A subcommand that writes one file, which "-o -" sends to standard output.
+template <class Args, class Add>
+Command withOneFile(CLI::App& app, const char* name, const std::string& help,
+                    int (*run)(const Args&), Add add) {
+  return command<Args>(app, name, help, add, [run](Args& a) {
+    claimStandardOutput({{a.output, "-o"}});
+    return run(a);
+  });
 }
 
 // The options that need checking beyond CLI11's before a benchmark starts.
@@ -212,78 +238,82 @@ class PlannerParamOptions {
 };
 
 Command addPlan(CLI::App& app) {
-  auto args = std::make_shared<PlanArgs>();
-  PlanArgs& pa = *args;
-  auto* planCmd = app.add_subcommand(
-      "plan",
+  auto run = [](PlanArgs& a, const std::shared_ptr<PlannerParamOptions>& params) {
+    claimStandardOutput({{a.output, "-o"}, {a.svg, "--svg"}, {a.statsJson, "--stats-json"}});
+    startLongRun(a.memoryMb);
+    a.params.values = params->given();
+    return plan(a);
+  };
+  return command<PlanArgs>(
+      app, "plan",
       "Plan a certified motion with MMS (manifold samples: fixed-angle slices, fixed-position\n"
-      "lines). Exit 0 path found and certified, 1 no path within the time limit, 2 bad input");
-  sceneArg(planCmd, pa.scene, "Scene file");
-  planCmd->add_option("-o,--output", pa.output,
-                      "Write the path (mms-path/1) here (-: standard output)");
-  planCmd->add_option("--svg", pa.svg,
-                      "Write an animated SVG of the scene and path here (-: standard output)");
-  seedOption(planCmd, pa.seed, "Random seed (same seed, same path)");
-  planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
-      ->capture_default_str()
-      ->check(CLI::Number)
-      ->check(CLI::Range(0.01, 1e6));
-  memoryLimitOption(planCmd, pa.memoryMb,
-                    "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
-  quietFlag(planCmd, pa.quiet, "No progress messages on stderr");
-  std::string plannerHelp = std::string("The planner (default ") + mms::kDefaultPlanner + "):";
-  for (const mms::PlannerInfo& p : mms::planners())
-    plannerHelp += "\n  " + p.name + ": " + p.summary;
-  planCmd->add_option("--planner", pa.planner, plannerHelp)->check(CLI::IsMember(plannerNames()));
-  auto params = std::make_shared<PlannerParamOptions>(planCmd);
-  planCmd->add_option(
-      "--stats-json", pa.statsJson,
-      "Write a JSON summary of the run (status, times, sizes) here (-: standard output)");
-  planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
-                    "In the SVG, also draw the lines' points and the free-space cells of the "
-                    "slices the path uses (one robot: auto then runs MMS alone)");
-  planCmd->add_flag("--save-roadmap", pa.saveRoadmap,
-                    "One robot: keep the free-space cells the path uses and the lines' points in "
-                    "the path file, for mms view (auto then runs MMS alone)");
-  planCmd->add_option(
-      "--queries", pa.queries,
-      "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "
-      "\"queries\": [{\"start\": [x,y,theta], \"goal\": [x,y,theta]}, ...]}; with -o/--svg, "
-      "files are numbered (out.0.json, ...)");
-  return {planCmd, [args, params] {
-            claimStandardOutput(
-                {{args->output, "-o"}, {args->svg, "--svg"}, {args->statsJson, "--stats-json"}});
-            startLongRun(args->memoryMb);
-            args->params.values = params->given();
-            return plan(*args);
-          }};
+      "lines). Exit 0 path found and certified, 1 no path within the time limit, 2 bad input",
+      [](CLI::App* planCmd, PlanArgs& pa) {
+        sceneArg(planCmd, pa.scene, "Scene file");
+        planCmd->add_option("-o,--output", pa.output,
+                            "Write the path (mms-path/1) here (-: standard output)");
+        planCmd->add_option(
+            "--svg", pa.svg,
+            "Write an animated SVG of the scene and path here (-: standard output)");
+        seedOption(planCmd, pa.seed, "Random seed (same seed, same path)");
+        planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
+            ->capture_default_str()
+            ->check(CLI::Number)
+            ->check(CLI::Range(0.01, 1e6));
+        memoryLimitOption(
+            planCmd, pa.memoryMb,
+            "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
+        quietFlag(planCmd, pa.quiet, "No progress messages on stderr");
+        std::string plannerHelp =
+            std::string("The planner (default ") + mms::kDefaultPlanner + "):";
+        for (const mms::PlannerInfo& p : mms::planners())
+          plannerHelp += "\n  " + p.name + ": " + p.summary;
+        planCmd->add_option("--planner", pa.planner, plannerHelp)
+            ->check(CLI::IsMember(plannerNames()));
+        auto params = std::make_shared<PlannerParamOptions>(planCmd);
+        planCmd->add_option(
+            "--stats-json", pa.statsJson,
+            "Write a JSON summary of the run (status, times, sizes) here (-: standard output)");
+        planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
+                          "In the SVG, also draw the lines' points and the free-space cells of the "
+                          "slices the path uses (one robot: auto then runs MMS alone)");
+        planCmd->add_flag(
+            "--save-roadmap", pa.saveRoadmap,
+            "One robot: keep the free-space cells the path uses and the lines' points in "
+            "the path file, for mms view (auto then runs MMS alone)");
+        planCmd->add_option(
+            "--queries", pa.queries,
+            "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "
+            "\"queries\": [{\"start\": [x,y,theta], \"goal\": [x,y,theta]}, ...]}; with -o/--svg, "
+            "files are numbered (out.0.json, ...)");
+        return params;
+      },
+      run);
 }
 
 Command addValidate(CLI::App& app) {
-  auto args = std::make_shared<ValidateArgs>();
-  ValidateArgs& va = *args;
-  auto* validateCmd =
-      app.add_subcommand("validate", "Load and validate a scene (mms-scene/1); print a summary");
-  sceneArg(validateCmd, va.scene, "Scene file");
-  quietFlag(validateCmd, va.quiet, "Print nothing when valid");
-  return {validateCmd, [args] { return validate(*args); }};
+  return command<ValidateArgs>(
+      app, "validate", "Load and validate a scene (mms-scene/1); print a summary",
+      [](CLI::App* cmd, ValidateArgs& a) {
+        sceneArg(cmd, a.scene, "Scene file");
+        quietFlag(cmd, a.quiet, "Print nothing when valid");
+      },
+      [](ValidateArgs& a) { return validate(a); });
 }
 
 Command addCheck(CLI::App& app) {
-  auto args = std::make_shared<CheckArgs>();
-  CheckArgs& ca = *args;
-  auto* checkCmd = app.add_subcommand(
-      "check",
+  return command<CheckArgs>(
+      app, "check",
       "Certify a path (mms-path/1) as a continuous collision-free motion from start to goal.\n"
-      "Exit 0 certified, 1 rejected (first failing segment, parameter and reason), 2 bad input");
-  sceneArg(checkCmd, ca.scene, "Scene file");
-  checkCmd->add_option("PATH", ca.path, "Path file")->required();
-  checkCmd
-      ->add_option("--max-evaluations", ca.maxEvaluations,
-                   "Poses the checker may evaluate before giving up")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  return {checkCmd, [args] { return check(*args); }};
+      "Exit 0 certified, 1 rejected (first failing segment, parameter and reason), 2 bad input",
+      [](CLI::App* cmd, CheckArgs& a) {
+        sceneAndPath(cmd, a.scene, a.path, "Scene file", "Path file")->required();
+        cmd->add_option("--max-evaluations", a.maxEvaluations,
+                        "Poses the checker may evaluate before giving up")
+            ->capture_default_str()
+            ->check(CLI::PositiveNumber);
+      },
+      [](CheckArgs& a) { return check(a); });
 }
 
 Command addRender(CLI::App& app) {
@@ -291,8 +321,7 @@ Command addRender(CLI::App& app) {
       app, "render",
       "Draw a scene (and a path, animated) as SVG: start poses green, goal poses red", render,
       [](CLI::App* cmd, RenderArgs& a) {
-        sceneArg(cmd, a.scene, "Scene file");
-        cmd->add_option("PATH", a.path, "Path file to draw and animate");
+        sceneAndPath(cmd, a.scene, a.path, "Scene file", "Path file to draw and animate");
         outputOption(cmd, a.output, "SVG file to write (-: standard output)");
         cmd->add_option("--width", a.width, "Picture width in pixels")
             ->capture_default_str()
@@ -311,8 +340,8 @@ Command addView(CLI::App& app) {
       "time slider, speed, traces, the planner's cells with --save-roadmap paths). Open it in\n"
       "any browser; FILE.html#t=0.5 opens it half-way through the motion",
       view, [](CLI::App* cmd, ViewArgs& a) {
-        sceneArg(cmd, a.scene, "Scene file (any format mms reads)");
-        cmd->add_option("PATH", a.path, "Path file to play");
+        sceneAndPath(cmd, a.scene, a.path, "Scene file (any format mms reads)",
+                     "Path file to play");
         outputOption(cmd, a.output, "HTML file to write (-: standard output)");
       });
 }
@@ -325,8 +354,7 @@ Command addImport(CLI::App& app) {
       "(plan, validate, check, render and view read these files directly too)",
       importScene, [](CLI::App* cmd, ImportArgs& a) {
         cmd->add_option("FILE", a.input, "OMPL.app .cfg or discopygal .json")->required();
-        outputOption(cmd, a.output, "Scene file to write (-: standard output)");
-        quietFlag(cmd, a.quiet, "Print nothing on success");
+        convertedOutput(cmd, a.output, a.quiet, "Scene file");
         cmd->add_option("--bounds", a.bounds,
                         "XMIN,YMIN,XMAX,YMAX: the workspace, instead of the one the file gives "
                         "(discopygal scenes give none: by default the box around obstacles and "
@@ -340,83 +368,89 @@ Command addExport(CLI::App& app) {
       "Write a scene as discopygal JSON (--to discopygal), or a path as OMPL.app's .path text\n"
       "(--to ompl-path, one rigid robot)",
       exportScene, [](CLI::App* cmd, ExportArgs& a) {
-        sceneArg(cmd, a.scene, "Scene file");
-        cmd->add_option("PATH", a.path, "Path file (for --to ompl-path)");
+        sceneAndPath(cmd, a.scene, a.path, "Scene file", "Path file (for --to ompl-path)");
         cmd->add_option("--to", a.to, "discopygal or ompl-path")
             ->required()
             ->check(CLI::IsMember({"discopygal", "ompl-path"}));
-        outputOption(cmd, a.output, "File to write (-: standard output)");
-        quietFlag(cmd, a.quiet, "Print nothing on success");
+        convertedOutput(cmd, a.output, a.quiet, "File");
       });
 }
 
 Command addLab(CLI::App& app) {
-  auto args = std::make_shared<LabArgs>();
-  LabArgs& la = *args;
-  auto* labCmd = app.add_subcommand(
-      "lab",
+  // Ctrl-C keeps its default (the lab writes its files only at the end, atomically).
+  auto run = [](LabArgs& a) {
+    claimStandardOutput({}, {{a.output, "-o"}});
+    return lab(a);
+  };
+  return command<LabArgs>(
+      app, "lab",
       "Measure the paper's theory (docs/theory.md): 'completeness' (failure rate of MMS and PRM\n"
       "against samples in R^2..R^6, Theorem 3.3) or 'passages' (flume vs tunnel, k-clearance,\n"
-      "the Pacman's passage). Writes SVG plots, CSV and a Markdown summary");
-  labCmd->add_option("EXPERIMENT", la.experiment, "completeness or passages")
-      ->required()
-      ->check(CLI::IsMember({"completeness", "passages"}));
-  labCmd->add_option("-o,--output", la.output, "Folder for the report (created if missing)")
-      ->capture_default_str();
-  seedOption(labCmd, la.seed, "Random seed (same seed, same report)");
-  labCmd->add_option("--trials", la.trials, "Trials per setting (0: the experiment's default)")
-      ->check(CLI::Range(0, 1000000));
-  labCmd->add_option("--threads", la.threads, "Threads for trials (0: all cores)")
-      ->capture_default_str()
-      ->check(CLI::Range(0u, 256u));
-  labCmd->add_flag("--quick", la.quick, "Small settings: a smoke run in seconds");
-  labCmd->add_flag("--no-pacman", la.noPacman, "passages: leave out the Pacman proxy");
-  quietFlag(labCmd, la.quiet, "No progress messages");
-  // Ctrl-C keeps its default (the lab writes its files only at the end, atomically).
-  return {labCmd, [args] {
-            claimStandardOutput({}, {{args->output, "-o"}});
-            return lab(*args);
-          }};
+      "the Pacman's passage). Writes SVG plots, CSV and a Markdown summary",
+      [](CLI::App* labCmd, LabArgs& la) {
+        labCmd->add_option("EXPERIMENT", la.experiment, "completeness or passages")
+            ->required()
+            ->check(CLI::IsMember({"completeness", "passages"}));
+        labCmd->add_option("-o,--output", la.output, "Folder for the report (created if missing)")
+            ->capture_default_str();
+        seedOption(labCmd, la.seed, "Random seed (same seed, same report)");
+        labCmd
+            ->add_option("--trials", la.trials, "Trials per setting (0: the experiment's default)")
+            ->check(CLI::Range(0, 1000000));
+        labCmd->add_option("--threads", la.threads, "Threads for trials (0: all cores)")
+            ->capture_default_str()
+            ->check(CLI::Range(0u, 256u));
+        labCmd->add_flag("--quick", la.quick, "Small settings: a smoke run in seconds");
+        labCmd->add_flag("--no-pacman", la.noPacman, "passages: leave out the Pacman proxy");
+        quietFlag(labCmd, la.quiet, "No progress messages");
+      },
+      run);
 }
 
 Command addAssemble(CLI::App& app) {
-  auto args = std::make_shared<AssembleArgs>();
-  AssembleArgs& aa = *args;
-  auto* assembleCmd = app.add_subcommand(
-      "assemble",
+  auto run = [](AssembleArgs& a) {
+    claimStandardOutput({{a.svg, "--svg"}}, {{a.output, "-o"}});
+    startLongRun(a.memoryMb);
+    return assemble(a);
+  };
+  return command<AssembleArgs>(
+      app, "assemble",
       "Three-handed disassembly: remove every part (robot) from the static part (the obstacles),\n"
       "one part or two at a time while the others stay put. Parts whose goal equals their start\n"
       "leave the obstacles' bounding box; the others go to their goals. Writes "
       "DIR/step-K.scene.json\n"
       "and step-K.path.json per step, DIR/disassembly.{scene,path}.json (the whole motion, "
       "certified)\n"
-      "and DIR/disassembly.json (the sequence). Exit 1 when parts remain stuck.");
-  sceneArg(assembleCmd, aa.scene, "Scene file (mms-scene/1)");
-  outputOption(assembleCmd, aa.output, "Directory for the files");
-  assembleCmd->add_option("--svg", aa.svg,
-                          "Write an animated SVG of the whole disassembly (-: standard output)");
-  seedOption(assembleCmd, aa.seed, "Random seed");
-  assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
-      ->capture_default_str()
-      ->check(CLI::Number)
-      ->check(CLI::Range(0.01, 1e7));
-  memoryLimitOption(assembleCmd, aa.memoryMb,
-                    "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
-  assembleCmd->add_flag("--no-pairs", aa.noPairs,
-                        "Two hands only: move one part at a time (exact for translating parts)");
-  quietFlag(assembleCmd, aa.quiet, "No progress messages on stderr");
-  return {assembleCmd, [args] {
-            claimStandardOutput({{args->svg, "--svg"}}, {{args->output, "-o"}});
-            startLongRun(args->memoryMb);
-            return assemble(*args);
-          }};
+      "and DIR/disassembly.json (the sequence). Exit 1 when parts remain stuck.",
+      [](CLI::App* assembleCmd, AssembleArgs& aa) {
+        sceneArg(assembleCmd, aa.scene, "Scene file (mms-scene/1)");
+        outputOption(assembleCmd, aa.output, "Directory for the files");
+        assembleCmd->add_option(
+            "--svg", aa.svg, "Write an animated SVG of the whole disassembly (-: standard output)");
+        seedOption(assembleCmd, aa.seed, "Random seed");
+        assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
+            ->capture_default_str()
+            ->check(CLI::Number)
+            ->check(CLI::Range(0.01, 1e7));
+        memoryLimitOption(
+            assembleCmd, aa.memoryMb,
+            "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
+        assembleCmd->add_flag(
+            "--no-pairs", aa.noPairs,
+            "Two hands only: move one part at a time (exact for translating parts)");
+        quietFlag(assembleCmd, aa.quiet, "No progress messages on stderr");
+      },
+      run);
 }
 
 Command addScenario(CLI::App& app) {
-  auto args = std::make_shared<ScenarioArgs>();
-  ScenarioArgs& sa = *args;
-  auto* scenarioCmd = app.add_subcommand(
-      "scenario",
+  auto run = [](ScenarioArgs& a, const CLI::Option* slackOption) {
+    claimStandardOutput({{a.output, "-o"}});
+    a.slackGiven = slackOption->count() > 0;
+    return scenario(a);
+  };
+  return command<ScenarioArgs>(
+      app, "scenario",
       "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
       "random-polygons (--seed), assembly-1 and assembly-2 (--slack), a random test scene "
       "(random: --seed, --robots, --obstacles), carry-turn (--seed: a gripper and the part it "
@@ -426,67 +460,73 @@ Command addScenario(CLI::App& app) {
       "other's places), discs-room (--seed, --robots: discs cross an open room among "
       "obstacles), open-clutter (--seed: one or two L-shaped robots cross random "
       "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor) or doors "
-      "(--seed: a long robot lines up with the doors of 1-3 thin walls)");
-  scenarioCmd
-      ->add_option(
-          "NAME", sa.name,
-          "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
-          "carry-turn, niche-swap, niche-three, discs-swap, discs-room, open-clutter, bend or "
-          "doors")
-      ->required()
-      ->check(CLI::IsMember(mms::scenarioNames()));
-  outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");
-  scenarioCmd
-      ->add_option("--tightness", sa.tightness,
-                   "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 0.999));
-  seedOption(scenarioCmd, sa.seed,
-             "random-polygons, random and the generated families: the seed of the geometry");
-  scenarioCmd
-      ->add_option("--robots", sa.robots,
-                   "random: 1 or 2 robots (default: from the seed); discs-room: how many discs "
-                   "(default 10, at most 16)")
-      ->check(CLI::Range(1, 16));
-  scenarioCmd
-      ->add_option("--obstacles", sa.obstacles,
-                   "random: how many obstacles (default: from the seed)")
-      ->check(CLI::Range(0, 100000));
-  auto* slackOption =
-      scenarioCmd
-          ->add_option("--slack", sa.slack,
-                       "assembly-1/2: the play between parts and walls, at most 0.15 (the "
-                       "smaller, the tighter); niche-swap: the niche's play around a robot, a "
-                       "share of its size (default: 0.04-0.1 from the seed; 0.5 is roomy)")
-          ->capture_default_str()
-          ->check(CLI::Range(0.001, 1.0));
-  scenarioCmd
-      ->add_option("--translate", sa.translate,
-                   "robots (by name, comma-separated) that only translate, e.g. niche-three's "
-                   "oncoming; each must keep its angle from start to goal")
-      ->delimiter(',');
-  scenarioCmd->add_flag("--m-parts-only", sa.mPartsOnly,
-                        "assembly-2: only the two M parts, with goals outside (the 4-D problem "
-                        "left once the triangles are out)");
-  return {scenarioCmd, [args, slackOption] {
-            claimStandardOutput({{args->output, "-o"}});
-            args->slackGiven = slackOption->count() > 0;
-            return scenario(*args);
-          }};
+      "(--seed: a long robot lines up with the doors of 1-3 thin walls)",
+      [](CLI::App* scenarioCmd, ScenarioArgs& sa) {
+        scenarioCmd
+            ->add_option("NAME", sa.name,
+                         "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
+                         "carry-turn, niche-swap, niche-three, discs-swap, discs-room, "
+                         "open-clutter, bend or "
+                         "doors")
+            ->required()
+            ->check(CLI::IsMember(mms::scenarioNames()));
+        outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");
+        scenarioCmd
+            ->add_option(
+                "--tightness", sa.tightness,
+                "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
+            ->capture_default_str()
+            ->check(CLI::Range(0.0, 0.999));
+        seedOption(scenarioCmd, sa.seed,
+                   "random-polygons, random and the generated families: the seed of the geometry");
+        scenarioCmd
+            ->add_option(
+                "--robots", sa.robots,
+                "random: 1 or 2 robots (default: from the seed); discs-room: how many discs "
+                "(default 10, at most 16)")
+            ->check(CLI::Range(1, 16));
+        scenarioCmd
+            ->add_option("--obstacles", sa.obstacles,
+                         "random: how many obstacles (default: from the seed)")
+            ->check(CLI::Range(0, 100000));
+        auto* slackOption =
+            scenarioCmd
+                ->add_option(
+                    "--slack", sa.slack,
+                    "assembly-1/2: the play between parts and walls, at most 0.15 (the "
+                    "smaller, the tighter); niche-swap: the niche's play around a robot, a "
+                    "share of its size (default: 0.04-0.1 from the seed; 0.5 is roomy)")
+                ->capture_default_str()
+                ->check(CLI::Range(0.001, 1.0));
+        scenarioCmd
+            ->add_option(
+                "--translate", sa.translate,
+                "robots (by name, comma-separated) that only translate, e.g. niche-three's "
+                "oncoming; each must keep its angle from start to goal")
+            ->delimiter(',');
+        scenarioCmd->add_flag(
+            "--m-parts-only", sa.mPartsOnly,
+            "assembly-2: only the two M parts, with goals outside (the 4-D problem "
+            "left once the triangles are out)");
+        return slackOption;
+      },
+      run);
 }
 
 Command addMerge(CLI::App& app) {
-  auto args = std::make_shared<std::pair<std::vector<std::string>, std::string>>();
-  auto* mergeCmd =
-      app.add_subcommand("bench-merge",
-                         "Merge the runs of several mms bench folders (shards) into one, "
-                         "with reports");
-  mergeCmd->add_option("DIRS", args->first, "Benchmark folders")->required();
-  outputOption(mergeCmd, args->second, "Merged folder");
-  return {mergeCmd, [args] {
-            claimStandardOutput({}, {{args->second, "-o"}});
-            return benchMerge(args->first, args->second);
-          }};
+  using Folders = std::pair<std::vector<std::string>, std::string>;  // (shards, merged)
+  auto run = [](Folders& f) {
+    claimStandardOutput({}, {{f.second, "-o"}});
+    return benchMerge(f.first, f.second);
+  };
+  return command<Folders>(
+      app, "bench-merge",
+      "Merge the runs of several mms bench folders (shards) into one, with reports",
+      [](CLI::App* cmd, Folders& f) {
+        cmd->add_option("DIRS", f.first, "Benchmark folders")->required();
+        outputOption(cmd, f.second, "Merged folder");
+      },
+      run);
 }
 
 // The benchmark's settings from its options: the command that ran it (quoted where a shell
@@ -516,58 +556,60 @@ BenchArgs benchSettings(const BenchOptions& o, const std::vector<std::string>& a
 }
 
 Command addBench(CLI::App& app, const std::vector<std::string>& argv) {
-  auto args = std::make_shared<BenchOptions>();
-  BenchArgs& ba = *args;
-  // By default the portfolio, MMS and the four OMPL planners the benchmarks compare against (all
-  // fourteen at 12 runs of 60 s would take up to 2.8 h per scene).
-  auto* benchCmd = app.add_subcommand("bench",
-                                      "Run planners on scenes, N seeds each, every run in its own "
-                                      "process under a time and memory limit.\n"
-                                      "Writes DIR/runs.jsonl as runs finish (rerun to resume), "
-                                      "then DIR/report.md (Markdown table),\n"
-                                      "DIR/results.csv, DIR/ompl/*.log (for "
-                                      "ompl_benchmark_statistics / Planner Arena) and, with a\n"
-                                      "sweep, DIR/tightness.svg");
-  benchCmd->add_option("SCENES", ba.scenes, "Scene files")->check(CLI::ExistingFile);
-  outputOption(benchCmd, ba.output, "Results folder");
-  benchCmd
-      ->add_option("--planners", args->planners,
-                   "Comma-separated planners (see mms plan --help for every name)")
-      ->capture_default_str();
-  benchCmd->add_option("--runs", ba.runs, "Runs per scene and planner (seeds 1..N)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
-  benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")
-      ->capture_default_str()
-      ->check(CLI::Number)
-      ->check(CLI::Range(0.01, 1e6));
-  memoryLimitOption(benchCmd, ba.memoryMb, "MB of address space per run (0: none)");
-  benchCmd->add_option(
-      "--sweep-pacman", ba.sweepPacman,
-      "Comma-separated Pacman tightness values to add as generated scenes, e.g. 0,0.5,0.9");
-  benchCmd->add_option(
-      "--param", ba.params,
-      "Extra mms plan options for one planner, e.g. --param \"prm=--k 10\" (repeatable)");
-  benchCmd
-      ->add_option(
-          "--shard", args->shard,
-          "K/N: run only the K-th of N disjoint parts of the run list (merge with mms bench-merge)")
-      ->capture_default_str();
-  benchCmd
-      ->add_option("--jobs", ba.jobs,
-                   "Cores to fill: runs at a time, an mms run with --threads N taking N of them "
-                   "(timings are noisier above 1)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 256));
-  benchCmd->add_flag("--stop-decided", ba.stopDecided,
-                     "Stop running a planner's seeds on a scene once half of them failed (its "
-                     "median is then decided as unsolved); the rest are recorded as not run");
-  benchCmd->add_flag("--report-only", ba.reportOnly,
-                     "Only rewrite the reports from the runs recorded in DIR");
-  return {benchCmd, [args, argv] {
-            claimStandardOutput({}, {{args->output, "-o"}});
-            return bench(benchSettings(*args, argv));
-          }};
+  auto run = [argv](BenchOptions& o) {
+    claimStandardOutput({}, {{o.output, "-o"}});
+    return bench(benchSettings(o, argv));
+  };
+  return command<BenchOptions>(
+      app, "bench",
+      "Run planners on scenes, N seeds each, every run in its own "
+      "process under a time and memory limit.\n"
+      "Writes DIR/runs.jsonl as runs finish (rerun to resume), "
+      "then DIR/report.md (Markdown table),\n"
+      "DIR/results.csv, DIR/ompl/*.log (for "
+      "ompl_benchmark_statistics / Planner Arena) and, with a\n"
+      "sweep, DIR/tightness.svg",
+      [](CLI::App* benchCmd, BenchOptions& ba) {
+        benchCmd->add_option("SCENES", ba.scenes, "Scene files")->check(CLI::ExistingFile);
+        outputOption(benchCmd, ba.output, "Results folder");
+        benchCmd
+            ->add_option("--planners", ba.planners,
+                         "Comma-separated planners (see mms plan --help for every name)")
+            ->capture_default_str();
+        benchCmd->add_option("--runs", ba.runs, "Runs per scene and planner (seeds 1..N)")
+            ->capture_default_str()
+            ->check(CLI::Range(1, 100000));
+        benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")
+            ->capture_default_str()
+            ->check(CLI::Number)
+            ->check(CLI::Range(0.01, 1e6));
+        memoryLimitOption(benchCmd, ba.memoryMb, "MB of address space per run (0: none)");
+        benchCmd->add_option(
+            "--sweep-pacman", ba.sweepPacman,
+            "Comma-separated Pacman tightness values to add as generated scenes, e.g. 0,0.5,0.9");
+        benchCmd->add_option(
+            "--param", ba.params,
+            "Extra mms plan options for one planner, e.g. --param \"prm=--k 10\" (repeatable)");
+        benchCmd
+            ->add_option("--shard", ba.shard,
+                         "K/N: run only the K-th of N disjoint parts of the run list (merge with "
+                         "mms bench-merge)")
+            ->capture_default_str();
+        benchCmd
+            ->add_option(
+                "--jobs", ba.jobs,
+                "Cores to fill: runs at a time, an mms run with --threads N taking N of them "
+                "(timings are noisier above 1)")
+            ->capture_default_str()
+            ->check(CLI::Range(1, 256));
+        benchCmd->add_flag(
+            "--stop-decided", ba.stopDecided,
+            "Stop running a planner's seeds on a scene once half of them failed (its "
+            "median is then decided as unsolved); the rest are recorded as not run");
+        benchCmd->add_flag("--report-only", ba.reportOnly,
+                           "Only rewrite the reports from the runs recorded in DIR");
+      },
+      run);
 }
 
 }  // namespace mms::cli
