@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-bench-assembly}
 cmake --build build -j"$(nproc)" --target mms
-build/mms bench scenarios/assembly/assembly-1.json scenarios/assembly/assembly-2-m-parts.json \
+build/mms bench scenes/assembly/assembly-1.json scenes/assembly/assembly-2-m-parts.json \
   --planners mms,rrt,prm --runs 10 --time-limit 30 --jobs 2 -o "$out"
 mkdir -p "$out/slack"
 scenes=()

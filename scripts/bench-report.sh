@@ -10,7 +10,7 @@ bash scripts/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target mms
 
-s=scenarios
+s=scenes
 build/mms bench \
   $s/two-robots/random-polygons.json $s/two-robots/viking-helmet.json \
   $s/one-robot/bar-slot.json $s/one-robot/corridor-corner.json $s/one-robot/bug-trap.json $s/one-robot/maze.json \

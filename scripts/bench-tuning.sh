@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-bench-tuning}
 cmake --build build -j"$(nproc)" --target mms
-scenes=(scenarios/two-robots/viking-helmet.json scenarios/two-robots/pacman-0.8.json)
+scenes=(scenes/two-robots/viking-helmet.json scenes/two-robots/pacman-0.8.json)
 common=(--runs 5 --time-limit 20 --jobs 2 -o "$out")
 build/mms bench "${scenes[@]}" --planners mms,prm,prm-bridge,uobprm "${common[@]}"
 for k in 5 20; do

@@ -10,7 +10,7 @@ bash scripts/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target mms
 
-scene=scenarios/two-robots/pacman-0.5.json
+scene=scenes/two-robots/pacman-0.5.json
 build/mms validate "$scene"
 build/mms plan "$scene" --planner mms --seed 1 -o demo-path.json --svg demo.svg
 build/mms check "$scene" demo-path.json

@@ -16,7 +16,7 @@ mms=build/mms
 [ -x "$mms" ] || { echo "build first: bash scripts/test.sh" >&2; exit 2; }
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-scenes=(scenarios/one-robot/sealed-ring.json)
+scenes=(scenes/one-robot/sealed-ring.json)
 options=("")  # extra `mms plan` options, one entry per scene
 for spec in 1:1000:1 2:3000:1 4:2000:1 3:1000:2 4:3000:2; do
   IFS=: read -r seed n robots <<<"$spec"

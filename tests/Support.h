@@ -26,7 +26,7 @@ constexpr bool kSanitized = false;
 inline int seedsToRun(int seeds) { return kSanitized ? 1 : seeds; }
 /// A planner test's time limit: generous under the sanitizers.
 inline double planSeconds(double seconds) { return kSanitized ? 10 * seconds : seconds; }
-inline std::string scenario(const std::string& rel) { return sourceDir() + "/scenarios/" + rel; }
+inline std::string scenario(const std::string& rel) { return sourceDir() + "/scenes/" + rel; }
 /// The axis-aligned rectangle [x0, x1] x [y0, y1], counter-clockwise.
 inline Ring rect(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};

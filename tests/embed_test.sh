@@ -22,7 +22,7 @@ mms=$work/prefix/bin/mms
 # Scenes the program has never seen: generated now, from seeds.
 "$mms" scenario random-polygons --seed 13 -o "$work/two.json"
 "$mms" scenario pacman --tightness 0.3 -o "$work/pacman.json"
-cp "$src/scenarios/one-robot/bar-slot.json" "$work/one.json"
+cp "$src/scenes/one-robot/bar-slot.json" "$work/one.json"
 for scene in one two pacman; do
   "$embed" "$work/$scene.json" "$work/$scene.path.json"
   "$mms" check "$work/$scene.json" "$work/$scene.path.json"

@@ -5,7 +5,7 @@
 #   layers_test.sh SOURCE_DIR
 set -euo pipefail
 src=$1/src
-order=(geometry manifolds graph check path planner baselines api io scenarios render bench assembly lab)
+order=(geometry manifolds graph check path planner baselines registry io scenarios render bench assembly lab)
 rank() {
   local i
   for i in "${!order[@]}"; do [ "${order[$i]}" = "$1" ] && { echo "$i"; return; }; done

@@ -39,4 +39,4 @@ def box_scene(wall=True):
 @pytest.fixture
 def bar_slot():
     import mms
-    return mms.load_scene(source("scenarios", "one-robot", "bar-slot.json"))
+    return mms.load_scene(source("scenes", "one-robot", "bar-slot.json"))

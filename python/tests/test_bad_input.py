@@ -60,8 +60,8 @@ def mutations(text, rng, count):
 @pytest.mark.filterwarnings("ignore::UserWarning")
 def test_mutated_scenes_and_paths(tmp_path):
     rng = random.Random(20261124)
-    scene_file = source("scenarios", "one-robot", "bar-slot.json")
-    path_file = source("scenarios", "one-robot", "bar-slot.path.json")
+    scene_file = source("scenes", "one-robot", "bar-slot.json")
+    path_file = source("scenes", "one-robot", "bar-slot.path.json")
     scene = mms.load_scene(scene_file)
     texts = [open(f).read() for f in corpus("scene") + corpus("discopygal")
              if f.endswith(".json")][:12]

@@ -8,7 +8,7 @@ from conftest import box_scene, source
 
 def test_bench_two_planners(tmp_path):
     open_room = mms.Scene(box_scene(wall=False))
-    rows = mms.bench([source("scenarios", "one-robot", "bar-slot.json"), open_room],
+    rows = mms.bench([source("scenes", "one-robot", "bar-slot.json"), open_room],
                      ["mms", "rrtconnect"], tmp_path / "b", runs=2, time_limit=10,
                      memory_limit=0)  # none: sanitizer builds reserve terabytes of addresses
     # One row per run: two scenes, two planners, seeds 1 and 2.
@@ -29,7 +29,7 @@ def test_bench_two_planners(tmp_path):
 
 def test_bench_refuses_bad_input(tmp_path):
     with pytest.raises(mms.InputError, match="planner"):
-        mms.bench(source("scenarios", "one-robot", "bar-slot.json"), ["astar"], tmp_path / "c",
+        mms.bench(source("scenes", "one-robot", "bar-slot.json"), ["astar"], tmp_path / "c",
                   runs=1, time_limit=1)
     with pytest.raises(mms.InputError, match="results.csv"):
         mms.load_bench(tmp_path / "nothing")

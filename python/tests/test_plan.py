@@ -32,7 +32,7 @@ def test_one_robot_path_is_certified_and_saved(bar_slot, tmp_path):
     assert r.parameters["n_theta"] == 16 and r.parameters["optimize"] == 1
     file = tmp_path / "bar.path.json"
     r.save(file)
-    assert cli("check", source("scenarios", "one-robot", "bar-slot.json"), file).returncode == 0
+    assert cli("check", source("scenes", "one-robot", "bar-slot.json"), file).returncode == 0
     again = mms.load_path(bar_slot, file)
     assert len(again) == len(r.path)
     assert all(a == pytest.approx(b, abs=1e-9) for a, b in zip(again, r.path))

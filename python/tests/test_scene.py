@@ -16,7 +16,7 @@ def test_load_scene_reads_every_format(bar_slot):
     assert bar_slot.robot_names == ["bar"] or len(bar_slot.robot_names) == 1
     assert bar_slot.dof == 3
     assert len(bar_slot.start) == 3 and len(bar_slot.goal) == 3
-    two = mms.load_scene(source("scenarios", "two-robots", "pacman-0.5.json"))
+    two = mms.load_scene(source("scenes", "two-robots", "pacman-0.5.json"))
     assert two.dof == 6 and len(two.robot_names) == 2
     assert "2 robots" in repr(two)
 

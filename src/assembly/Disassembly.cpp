@@ -7,7 +7,7 @@
 #include "check/PathChecker.h"
 #include "io/PathIO.h"
 #include "manifolds/CellSampling.h"
-#include "planner/MmsPlanner.h"
+#include "planner/OneRobotPlanner.h"
 #include "planner/TwoRobotPlanner.h"
 
 namespace mms {
@@ -118,10 +118,10 @@ bool DisassemblyPlanner::trySingle(size_t part, const Termination& stop, Disasse
   }
   step.robots[0].goal = goal;
   ++out.attempts;
-  MmsSettings settings;
+  OneRobotSettings settings;
   settings.seed = attemptSeed_++;
-  MmsPlanner planner(step, 0, settings);
-  const MmsResult r = planner.solve(pose_[part], goal, stop);
+  OneRobotPlanner planner(step, 0, settings);
+  const OneRobotResult r = planner.solve(pose_[part], goal, stop);
   if (r.status != PlanStatus::Found) return false;
   record({{part}, {part}, std::move(step), r.waypoints, watch.seconds()}, out);
   return true;

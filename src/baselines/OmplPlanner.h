@@ -14,7 +14,7 @@
 namespace mms {
 
 struct OmplSettings {
-  std::string planner = "rrtconnect";  // a name of the registry (src/api/OmplPlanners.cpp)
+  std::string planner = "rrtconnect";  // a name of the registry (src/registry/OmplPlanners.cpp)
   uint64_t seed = 1;
   /// Motion-check resolution as a fraction of the state space's extent (OMPL's
   /// setStateValidityCheckingResolution).

@@ -17,7 +17,7 @@
 
 namespace mms {
 
-/// Point-location strategies of CGAL's arrangement package (bench/bench_manifolds.cpp
+/// Point-location strategies of CGAL's arrangement package (microbench/bench_manifolds.cpp
 /// measures them). Auto first tries the cells in doubles (decided only away from their edges),
 /// then walks (no preprocessing) until a slice has answered enough queries to pay for a
 /// trapezoidal map (~5 ms to build, ~10x faster per query on large slices).

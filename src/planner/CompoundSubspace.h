@@ -14,6 +14,8 @@ namespace mms {
 
 class CompoundSubspace {
  public:
+  /// Compound subspaces' roadmap groups start here, above any one-robot subspace's id.
+  static constexpr uint32_t kFirstGroup = 1u << 30;
   CompoundSubspace(uint32_t group, const Scene& scene, const CollisionChecker& checker,
                    const CompoundFrame& frame, Roadmap& roadmap, SubspaceStats& stats);
   CompoundSubspace(const CompoundSubspace&) = delete;  // its manifolds point at its members

@@ -266,7 +266,7 @@ void HeldRobotPlanner::collectCells(size_t firstNode) {
   for (size_t v = firstNode; v < roadmap_.nodeCount(); ++v) {
     const Roadmap::Entry& e = roadmap_.entryOf(v);
     if (&e.manifold->family() != &SliceManifold::kFamily) continue;
-    if (e.index & Subspace::kLocal) continue;  // holds are drawn at the shared angles only
+    if (Subspace::isLocal(e.index)) continue;  // holds are drawn at the shared angles only
     const Subspace& sub = *subspaces_[e.group];
     cells_[sub.moving()].push_back(v);
     cellAdded(v, sub, e.index);

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "check/PathChecker.h"
-#include "planner/MmsPlanner.h"
+#include "planner/OneRobotPlanner.h"
 #include "planner/Subspace.h"
 
 namespace mms {

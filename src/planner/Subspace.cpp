@@ -120,16 +120,16 @@ bool Subspace::free(const Pose& q) const {
   return true;
 }
 
-// `index` is the slice's place in `store`, with kLocal set for a local slice.
+// `index` names the slice in `store` (localIndex for a local slice).
 uint32_t Subspace::addSliceManifold(const std::vector<Slice>& store, uint32_t index) {
   return addJoinedSlice(roadmap_, stats_,
-                        std::make_unique<SliceManifold>(frame_, store, index & ~kLocal), frame_.id,
-                        index, weave_);
+                        std::make_unique<SliceManifold>(frame_, store, positionOf(index)),
+                        frame_.id, index, weave_);
 }
 
 void Subspace::addLocalOverlay(Slice slice) {
   localSlices_.push_back(std::move(slice));
-  addSliceManifold(localSlices_, kLocal | uint32_t(localSlices_.size() - 1));
+  addSliceManifold(localSlices_, localIndex(localSlices_.size() - 1));
   ++stats_.localSlices;
 }
 

@@ -122,13 +122,16 @@ class Subspace {
   size_t moving() const { return frame_.moving; }
   const std::vector<std::pair<size_t, Pose>>& held() const { return frame_.held; }
   const std::vector<Slice>& slices() const { return slices_; }
-  /// Slices at angles of this subspace alone (not shared with the others), numbered from
-  /// kLocal in their roadmap entries' index.
+  /// Slices at angles of this subspace alone (not shared with the others).
   const std::vector<Slice>& localSlices() const { return localSlices_; }
-  static constexpr uint32_t kLocal = 1u << 31;
-  /// The slice a roadmap entry's `index` names: slices()[m], or localSlices()[m - kLocal].
-  const Slice& slice(uint32_t manifold) const {
-    return manifold & kLocal ? localSlices_[manifold & ~kLocal] : slices_[manifold];
+  /// A slice's roadmap entry `index`: its place among slices(), or among localSlices() with
+  /// the top bit set, so that one number names either kind.
+  static uint32_t localIndex(size_t k) { return kLocalBit | uint32_t(k); }
+  static bool isLocal(uint32_t index) { return (index & kLocalBit) != 0; }
+  static uint32_t positionOf(uint32_t index) { return index & ~kLocalBit; }
+  /// The slice a roadmap entry's `index` names.
+  const Slice& slice(uint32_t index) const {
+    return isLocal(index) ? localSlices_[positionOf(index)] : slices_[index];
   }
   const std::vector<Line>& lines() const { return lines_; }
 
@@ -158,6 +161,7 @@ class Subspace {
 
  private:
   uint32_t addSliceManifold(const std::vector<Slice>& store, uint32_t index);
+  static constexpr uint32_t kLocalBit = 1u << 31;
 
   HeldFrame frame_;
   const CollisionChecker& checker_;

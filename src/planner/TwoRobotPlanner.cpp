@@ -122,9 +122,9 @@ void TwoRobotPlanner::addCompound(const Termination& stop) {
     frames.push_back(g);
   for (const CompoundFrame& f : frames) {
     if (stop()) return;
-    compounds_.push_back(
-        std::make_unique<CompoundSubspace>(uint32_t((1u << 30) + compounds_.size()), contactScene_,
-                                           checker_, f, roadmap_, stats_.compound));
+    compounds_.push_back(std::make_unique<CompoundSubspace>(
+        CompoundSubspace::kFirstGroup + uint32_t(compounds_.size()), contactScene_, checker_, f,
+        roadmap_, stats_.compound));
     CompoundSubspace& c = *compounds_.back();
     for (const Slice& base : base_[0]) c.addSlice(base, *worlds_[1]);
     // Subspaces 0 and 2 hold robot 0 at its start and goal; 1 and 3 robot 1.

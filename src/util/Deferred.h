@@ -2,7 +2,7 @@
 // Work cut by a time limit leaves exact structures behind (a slice half built among thousands
 // of obstacles: arrangements of millions of exact points). Freeing them takes tens of ms, past
 // the limit that cut them. They are kept here instead and freed within some budget: at the
-// start of the next run and between restarts (api/Optimizing.cpp), by the outermost planner's
+// start of the next run and between restarts (registry/Optimizing.cpp), by the outermost planner's
 // destructor when no planner runs, or never in a command about to exit (the system takes the
 // memory back at once). So at most the unfinished manifolds of the runs since the last start
 // are kept: one per thread of each.

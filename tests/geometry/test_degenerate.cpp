@@ -20,7 +20,7 @@
 #include "manifolds/Line.h"
 #include "manifolds/Slice.h"
 #include "mms/Planner.h"
-#include "planner/MmsPlanner.h"
+#include "planner/OneRobotPlanner.h"
 #include "scenarios/RandomScene.h"
 
 namespace mms {
@@ -112,14 +112,14 @@ TEST(Degenerate, LinesWithCoincidentCriticalAnglesMatchTheChecker) {
   EXPECT_GT(samples, 9000u);
 }
 
-MmsResult plan(const Scene& s, double seconds) {
-  MmsPlanner planner(s, 0, {});
+OneRobotResult plan(const Scene& s, double seconds) {
+  OneRobotPlanner planner(s, 0, {});
   return planner.solve(s.robots[0].start, s.robots[0].goal, Termination(seconds));
 }
 
 TEST(Degenerate, TranslatingRobotPassesAGapExactlyItsWidthTouchingBothSides) {
   const Scene s = touchingScene(1.0, Motion::Translate);
-  const MmsResult r = plan(s, test::planSeconds(10));
+  const OneRobotResult r = plan(s, test::planSeconds(10));
   ASSERT_EQ(r.status, PlanStatus::Found);
   const CollisionChecker checker(s);
   const PathCheckResult c = checkPath(s, checker, r.waypoints);
@@ -135,7 +135,7 @@ TEST(Degenerate, GapNarrowerThanTheRobotByTenTolerancesHasNoPath) {
 
 TEST(Degenerate, RigidRobotAtAnExactFitGapNeverReturnsAnUncertifiedPath) {
   const Scene s = touchingScene(1.0, Motion::Rigid);
-  const MmsResult r = plan(s, test::planSeconds(2));
+  const OneRobotResult r = plan(s, test::planSeconds(2));
   if (r.status == PlanStatus::Found) {
     EXPECT_TRUE(r.certificate.ok);
     const CollisionChecker checker(s);
@@ -152,7 +152,7 @@ TEST(Degenerate, HundredsOfObstacles) {
   const Scene s = load(randomScene({11, 1, 500}));
   ASSERT_EQ(s.obstacles.size(), 500u);
   checkSlice(s, 0.7, test::kSanitized ? 300 : 2000);
-  const MmsResult r = plan(s, test::planSeconds(1));
+  const OneRobotResult r = plan(s, test::planSeconds(1));
   EXPECT_GT(r.stats.manifolds.slices, 0u);
   if (r.status == PlanStatus::Found) {
     const CollisionChecker checker(s);

@@ -12,7 +12,7 @@
 #include "manifolds/Slice.h"
 #include "mms/Planner.h"
 #include "mms/Termination.h"
-#include "planner/MmsPlanner.h"
+#include "planner/OneRobotPlanner.h"
 #include "planner/TwoRobotPlanner.h"
 #include "scenarios/Generators.h"
 #include "scenarios/RandomScene.h"
@@ -94,15 +94,15 @@ TEST(Limits, WhatALimitCutIsFreedWhenTheNextRunStarts) {
 
 TEST(Limits, OneRobotPlannerEndsWhenTheLimitStrikesInsideASlice) {
   const Scene scene = crowded(1, obstaclesForWholeSlices());
-  MmsPlanner planner(scene, 0, {});
-  const MmsResult r =
+  OneRobotPlanner planner(scene, 0, {});
+  const OneRobotResult r =
       planner.solve(scene.robots[0].start, scene.robots[0].goal, Termination(0.001));
   EXPECT_EQ(r.status, PlanStatus::NotFound);
   EXPECT_EQ(planner.slices().size(), 0u);  // the slice under way was dropped
   EXPECT_EQ(StopScope::current(), nullptr);
   // The planner stays usable: a second query with time builds slices. The sanitizers slow
   // slices more than the usual tenfold margin, so their budget is set apart.
-  const MmsResult again = planner.solve(scene.robots[0].start, scene.robots[0].goal,
+  const OneRobotResult again = planner.solve(scene.robots[0].start, scene.robots[0].goal,
                                         Termination(test::kSanitized ? 300 : 5));
   EXPECT_GT(planner.slices().size(), 0u);
   if (again.status == PlanStatus::Found) {

@@ -6,7 +6,7 @@
 #include "check/PathChecker.h"
 #include "io/SceneIO.h"
 #include "mms/Planner.h"
-#include "planner/MmsPlanner.h"
+#include "planner/OneRobotPlanner.h"
 #include "planner/NoPath.h"
 #include "planner/TwoRobotPlanner.h"
 #include "scenarios/Generators.h"
@@ -17,8 +17,8 @@ using namespace mms::test;
 
 namespace {
 
-MmsResult plan(const Scene& s) {
-  MmsPlanner planner(s, 0, MmsSettings{});
+OneRobotResult plan(const Scene& s) {
+  OneRobotPlanner planner(s, 0, OneRobotSettings{});
   return planner.solve(s.robots[0].start, s.robots[0].goal, Termination(planSeconds(2)));
 }
 
@@ -81,7 +81,7 @@ TEST(NoPath, ASlitOnlyTheCheckersShapePassesIsNoProof) {
   const CollisionChecker checker(s);
   EXPECT_TRUE(checkPath(s, checker, {{2, 5, 0}, {8, 5, 0}}).ok);
   EXPECT_EQ(proof(s, 0), "");
-  const MmsResult r = plan(s);
+  const OneRobotResult r = plan(s);
   EXPECT_EQ(r.status, PlanStatus::NotFound);  // the planner's slice misses the slit
   EXPECT_TRUE(r.stats.noPath.empty()) << r.stats.noPath;
 }
@@ -89,12 +89,12 @@ TEST(NoPath, ASlitOnlyTheCheckersShapePassesIsNoProof) {
 // A roadmap answers several queries: a proof about one does not stay with the next.
 TEST(NoPath, AProofBelongsToItsQuery) {
   const Scene s = loadScene(scenario("one-robot/sealed-ring.json"));
-  MmsPlanner planner(s, 0, MmsSettings{});
+  OneRobotPlanner planner(s, 0, OneRobotSettings{});
   const Pose start = s.robots[0].start;
-  const MmsResult walled = planner.solve(start, s.robots[0].goal, Termination(60));
+  const OneRobotResult walled = planner.solve(start, s.robots[0].goal, Termination(60));
   ASSERT_EQ(walled.status, PlanStatus::NotFound);
   EXPECT_FALSE(walled.stats.noPath.empty());
-  const MmsResult open = planner.solve(start, {-5, 5, 1}, Termination(60));
+  const OneRobotResult open = planner.solve(start, {-5, 5, 1}, Termination(60));
   ASSERT_EQ(open.status, PlanStatus::Found);
   EXPECT_TRUE(open.stats.noPath.empty()) << open.stats.noPath;
 }
@@ -105,8 +105,8 @@ TEST(NoPath, AWalledInGoalIsProvedAfterTheSecondRound) {
   const Scene s = loadScene(scenario("one-robot/sealed-ring.json"));
   EXPECT_NE(proof(s, 0).find("robot 'bar' cannot reach its goal: a disc of radius"),
             std::string::npos);
-  MmsPlanner planner(s, 0, MmsSettings{});
-  const MmsResult r = planner.solve(s.robots[0].start, s.robots[0].goal, Termination(60));
+  OneRobotPlanner planner(s, 0, OneRobotSettings{});
+  const OneRobotResult r = planner.solve(s.robots[0].start, s.robots[0].goal, Termination(60));
   EXPECT_EQ(r.status, PlanStatus::NotFound);
   EXPECT_EQ(r.stats.rounds, 2u);
   EXPECT_NE(r.stats.noPath.find("cannot reach its goal"), std::string::npos);

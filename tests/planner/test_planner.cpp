@@ -7,7 +7,7 @@
 
 #include "Support.h"
 #include "io/SceneIO.h"
-#include "planner/MmsPlanner.h"
+#include "planner/OneRobotPlanner.h"
 #include "scenarios/Generators.h"
 
 using namespace mms;
@@ -15,10 +15,10 @@ using namespace mms::test;
 
 namespace {
 
-MmsResult plan(const Scene& s, uint64_t seed, double seconds) {
-  MmsSettings st;
+OneRobotResult plan(const Scene& s, uint64_t seed, double seconds) {
+  OneRobotSettings st;
   st.seed = seed;
-  MmsPlanner planner(s, 0, st);
+  OneRobotPlanner planner(s, 0, st);
   return planner.solve(s.robots[0].start, s.robots[0].goal, Termination(seconds));
 }
 
@@ -30,7 +30,7 @@ TEST_P(SolvableScene, SolvedWithCertifiedPathsForSeveralSeeds) {
   const Scene s = loadScene(scenario(GetParam()));
   const CollisionChecker checker(s);
   for (uint64_t seed = 1; seed <= uint64_t(seedsToRun(4)); ++seed) {
-    const MmsResult r = plan(s, seed, planSeconds(30));
+    const OneRobotResult r = plan(s, seed, planSeconds(30));
     ASSERT_EQ(r.status, PlanStatus::Found) << GetParam() << " seed " << seed;
     // An independent check of what the planner returned.
     const PathCheckResult c = checkPath(s, checker, r.waypoints);
@@ -57,9 +57,9 @@ INSTANTIATE_TEST_SUITE_P(Bundled, SolvableScene,
 // first round is cut short, and the path lies on a few of the manifolds built.
 TEST(Plan, SearchStopsBuildingOnceStartAndGoalConnect) {
   const Scene s = loadScene(scenario("one-robot/bar-slot.json"));
-  const MmsSettings defaults;
+  const OneRobotSettings defaults;
   for (uint64_t seed = 1; seed <= 3; ++seed) {
-    const MmsResult r = plan(s, seed, planSeconds(30));
+    const OneRobotResult r = plan(s, seed, planSeconds(30));
     ASSERT_EQ(r.status, PlanStatus::Found);
     EXPECT_EQ(r.stats.rounds, 1u);
     EXPECT_LT(r.stats.manifolds.lines, defaults.nLines / 2) << "seed " << seed;
@@ -134,7 +134,7 @@ TEST(Plan, TranslateOnlyRobotUsesItsExactFreeSpace) {
   r.goal = {8, 2, 0.3};
   r.motion = Motion::Translate;
   s.robots = {r};
-  const MmsResult found = plan(s, 1, 10);
+  const OneRobotResult found = plan(s, 1, 10);
   ASSERT_EQ(found.status, PlanStatus::Found);
   EXPECT_TRUE(found.stats.noPath.empty());
   for (const Config& q : found.waypoints) EXPECT_EQ(q[2], 0.3);
@@ -143,7 +143,7 @@ TEST(Plan, TranslateOnlyRobotUsesItsExactFreeSpace) {
   // immediate, not a time-out.
   s.obstacles = {{{4, 0}, {6, 0}, {6, 10}, {4, 10}}};
   const auto t0 = std::chrono::steady_clock::now();
-  const MmsResult none = plan(s, 1, 30);
+  const OneRobotResult none = plan(s, 1, 30);
   EXPECT_EQ(none.status, PlanStatus::NotFound);
   EXPECT_NE(none.stats.noPath.find("robot 'block' only translates"), std::string::npos);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
@@ -151,15 +151,15 @@ TEST(Plan, TranslateOnlyRobotUsesItsExactFreeSpace) {
 
 TEST(Plan, RoadmapAnswersASecondQueryWithoutRebuilding) {
   const Scene s = loadScene(scenario("one-robot/bug-trap.json"));
-  MmsPlanner planner(s, 0, MmsSettings{});
+  OneRobotPlanner planner(s, 0, OneRobotSettings{});
   const Robot& r = s.robots[0];
-  const MmsResult first = planner.solve(r.start, r.goal, Termination(30));
+  const OneRobotResult first = planner.solve(r.start, r.goal, Termination(30));
   ASSERT_EQ(first.status, PlanStatus::Found);
   const size_t slices = planner.slices().size();
   // The reverse query, and one to another free placement outside the trap.
-  const MmsResult back = planner.solve(r.goal, r.start, Termination(30));
+  const OneRobotResult back = planner.solve(r.goal, r.start, Termination(30));
   ASSERT_EQ(back.status, PlanStatus::Found);
-  const MmsResult other = planner.solve(r.start, {7, 6, 0}, Termination(30));
+  const OneRobotResult other = planner.solve(r.start, {7, 6, 0}, Termination(30));
   ASSERT_EQ(other.status, PlanStatus::Found);
   EXPECT_EQ(planner.slices().size(), slices);  // answered from the existing slices
 }
@@ -214,10 +214,10 @@ TEST(Plan, LinesNearCellVerticesTurnTheBendWithFewerManifolds) {
   for (const Scene& s : scenes) {
     const CollisionChecker checker(s);
     for (int corner = 0; corner < 2; ++corner) {
-      MmsSettings st;
+      OneRobotSettings st;
       st.cornerLineShare = corner ? 0.5 : 0.0;
-      MmsPlanner planner(s, 0, st);
-      const MmsResult r =
+      OneRobotPlanner planner(s, 0, st);
+      const OneRobotResult r =
           planner.solve(s.robots[0].start, s.robots[0].goal, Termination(planSeconds(60)));
       ASSERT_EQ(r.status, PlanStatus::Found) << s.name;
       EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << s.name;

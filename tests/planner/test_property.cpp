@@ -11,7 +11,7 @@
 #include "baselines/OmplPlanner.h"
 #include "check/PathChecker.h"
 #include "io/SceneIO.h"
-#include "planner/MmsPlanner.h"
+#include "planner/OneRobotPlanner.h"
 #include "planner/TwoRobotPlanner.h"
 #include "scenarios/RandomScene.h"
 
@@ -37,10 +37,10 @@ PlanRun planMms(const Scene& scene, uint64_t seed, double limit) {
   Stopwatch clock;
   PlanRun run;
   if (scene.robots.size() == 1) {
-    MmsSettings s;
+    OneRobotSettings s;
     s.seed = seed;
-    MmsPlanner planner(scene, 0, s);
-    const MmsResult r =
+    OneRobotPlanner planner(scene, 0, s);
+    const OneRobotResult r =
         planner.solve(scene.robots[0].start, scene.robots[0].goal, Termination(limit));
     run.found = r.status == PlanStatus::Found;
     run.waypoints = r.waypoints;

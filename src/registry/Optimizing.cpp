@@ -12,9 +12,9 @@
 #include <functional>
 #include <memory>
 
-#include "api/Adapters.h"
 #include "check/PathChecker.h"
 #include "path/Optimize.h"
+#include "registry/Adapters.h"
 #include "util/Deferred.h"
 
 namespace mms {

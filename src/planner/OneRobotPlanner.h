@@ -24,7 +24,7 @@
 
 namespace mms {
 
-struct MmsSettings {
+struct OneRobotSettings {
   uint64_t seed = 1;
   size_t nTheta = 16;          // n_theta: slices in the first round (the paper's name)
   size_t nLines = 1024;        // n_l: lines in the first round (a line costs ~10 us, a slice ~1 ms)
@@ -60,7 +60,7 @@ class AngleSequence {
   double shift_;
 };
 
-struct MmsStats {
+struct OneRobotStats {
   SubspaceStats manifolds;  // slices, lines, their cells and build times
   size_t rounds = 0, graphNodes = 0, graphEdges = 0;
   size_t pathCells = 0;      // FSCs on the graph path
@@ -70,24 +70,24 @@ struct MmsStats {
   double searchSeconds = 0, motionSeconds = 0, certifySeconds = 0, totalSeconds = 0;
 };
 
-struct MmsResult {
+struct OneRobotResult {
   PlanStatus status = PlanStatus::NotFound;    // Found, NotFound or Cancelled
   std::vector<Config> waypoints;               // the robot's (x, y, theta), certified when Found
   std::vector<ConnectivityGraph::Node> cells;  // the graph path: (roadmap manifold, cell)
   PathCheckResult certificate;
-  MmsStats stats;
+  OneRobotStats stats;
 };
 
-class MmsPlanner {
+class OneRobotPlanner {
  public:
   /// Plans for robot `robot` of `scene` among the obstacles (other robots are ignored).
-  MmsPlanner(const Scene& scene, size_t robot, MmsSettings settings);
-  ~MmsPlanner();
+  OneRobotPlanner(const Scene& scene, size_t robot, OneRobotSettings settings);
+  ~OneRobotPlanner();
 
   /// Grows the roadmap until start and goal connect through a certified motion, or until
   /// `stop` says so. `progress`, when set, is called after each round.
-  MmsResult solve(const Pose& start, const Pose& goal, const Termination& stop,
-                  const std::function<void(const MmsStats&)>& progress = {});
+  OneRobotResult solve(const Pose& start, const Pose& goal, const Termination& stop,
+                       const std::function<void(const OneRobotStats&)>& progress = {});
 
   const Roadmap& roadmap() const { return roadmap_; }
   const std::vector<Slice>& slices() const { return subspace().slices(); }
@@ -96,18 +96,18 @@ class MmsPlanner {
  private:
   const Subspace& subspace() const { return *subspaces_.front(); }
   Subspace& subspace() { return *subspaces_.front(); }
-  MmsResult solveRounds(const Pose& start, const Pose& goal, const Termination& stop,
-                        const std::function<void(const MmsStats&)>& progress);
+  OneRobotResult solveRounds(const Pose& start, const Pose& goal, const Termination& stop,
+                             const std::function<void(const OneRobotStats&)>& progress);
   Vec2 nextLinePoint();
   void addSlice(double theta);
   void addNextSlice();
-  PlanStatus solveTranslation(const Pose& start, const Pose& goal, MmsResult& result);
-  MmsResult finish(MmsResult result, PlanStatus status, double seconds);
+  PlanStatus solveTranslation(const Pose& start, const Pose& goal, OneRobotResult& result);
+  OneRobotResult finish(OneRobotResult result, PlanStatus status, double seconds);
   /// The statistics of the roadmap's whole life, this query's `seconds` counted.
-  MmsStats statsSoFar(double seconds) const;
+  OneRobotStats statsSoFar(double seconds) const;
 
   Scene scene_;  // a one-robot copy: the planned robot only
-  MmsSettings settings_;
+  OneRobotSettings settings_;
   CollisionChecker checker_;
   Scene contactScene_;  // the robot shrunk as the checker sees it: manifolds are built for it
   SliceWorld sliceWorld_;
@@ -118,7 +118,7 @@ class MmsPlanner {
   // Slices of the next angles, built settings_.threads at a time ahead of their turn; they
   // join the roadmap one by one, so early stops do not depend on the thread count.
   std::deque<Slice> ahead_;
-  MmsStats stats_;
+  OneRobotStats stats_;
 };
 
 /// The scene reduced to robot `robot` alone (other robots dropped), for one-robot planning.

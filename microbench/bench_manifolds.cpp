@@ -9,7 +9,7 @@
 #include "io/SceneIO.h"
 #include "manifolds/Line.h"
 #include "manifolds/Slice.h"
-#include "planner/MmsPlanner.h"
+#include "planner/OneRobotPlanner.h"
 #include "scenarios/Generators.h"
 
 using namespace mms;
@@ -131,13 +131,13 @@ BENCHMARK(BM_SliceWithLocator<PointLocation::Landmarks>)
 // A whole query (fresh planner each time) on a bundled scene; seeds cycle so the figure is
 // a mean over seeds.
 void BM_Query(benchmark::State& state, const char* file) {
-  const Scene s = loadScene(std::string(MMS_SOURCE_DIR) + "/scenarios/" + file);
+  const Scene s = loadScene(std::string(MMS_SOURCE_DIR) + "/scenes/" + file);
   uint64_t seed = 0;
   for (auto _ : state) {
-    MmsSettings st;
+    OneRobotSettings st;
     st.seed = ++seed;
-    MmsPlanner planner(s, 0, st);
-    const MmsResult r = planner.solve(s.robots[0].start, s.robots[0].goal, Termination(60));
+    OneRobotPlanner planner(s, 0, st);
+    const OneRobotResult r = planner.solve(s.robots[0].start, s.robots[0].goal, Termination(60));
     if (r.status != PlanStatus::Found) state.SkipWithError("no path");
   }
 }

@@ -1,4 +1,4 @@
-#include "planner/MmsPlanner.h"
+#include "planner/OneRobotPlanner.h"
 
 #include <cmath>
 
@@ -44,7 +44,7 @@ double AngleSequence::next() {
   return std::remainder(shift_ + 2 * M_PI * fraction, 2 * M_PI);
 }
 
-MmsPlanner::MmsPlanner(const Scene& scene, size_t robot, MmsSettings settings)
+OneRobotPlanner::OneRobotPlanner(const Scene& scene, size_t robot, OneRobotSettings settings)
     : scene_(singleRobotScene(scene, robot)),
       settings_(settings),
       checker_(scene_),
@@ -57,9 +57,9 @@ MmsPlanner::MmsPlanner(const Scene& scene, size_t robot, MmsSettings settings)
                                                   stats_.manifolds));
 }
 
-MmsPlanner::~MmsPlanner() = default;
+OneRobotPlanner::~OneRobotPlanner() = default;
 
-Vec2 MmsPlanner::nextLinePoint() {
+Vec2 OneRobotPlanner::nextLinePoint() {
   const Box& b = scene_.bounds;
   auto uniform = [&] { return Vec2{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)}; };
   // Part of the points where some slice has room for the robot: lines there can connect.
@@ -80,7 +80,7 @@ Vec2 MmsPlanner::nextLinePoint() {
   return uniform();
 }
 
-void MmsPlanner::addSlice(double theta) {
+void OneRobotPlanner::addSlice(double theta) {
   std::optional<Slice> base;
   {
     const TimeCharge charge(stats_.manifolds.sliceSeconds);
@@ -91,7 +91,7 @@ void MmsPlanner::addSlice(double theta) {
 
 // The slice at the next angle of the sequence. Slices are built settings_.threads at a time
 // and kept until their turn, so the roadmap grows in the same order whatever the thread count.
-void MmsPlanner::addNextSlice() {
+void OneRobotPlanner::addNextSlice() {
   if (ahead_.empty()) {
     std::vector<double> thetas(std::max(1u, settings_.threads));
     for (double& t : thetas) t = angles_.next();
@@ -102,15 +102,15 @@ void MmsPlanner::addNextSlice() {
   ahead_.pop_front();
 }
 
-MmsStats MmsPlanner::statsSoFar(double seconds) const {
-  MmsStats s = stats_;
+OneRobotStats OneRobotPlanner::statsSoFar(double seconds) const {
+  OneRobotStats s = stats_;
   s.graphNodes = roadmap_.nodeCount();
   s.graphEdges = roadmap_.edgeCount();
   s.totalSeconds += seconds;
   return s;
 }
 
-MmsResult MmsPlanner::finish(MmsResult result, PlanStatus status, double seconds) {
+OneRobotResult OneRobotPlanner::finish(OneRobotResult result, PlanStatus status, double seconds) {
   stats_ = statsSoFar(seconds);
   result.status = status;
   result.stats = stats_;
@@ -119,7 +119,8 @@ MmsResult MmsPlanner::finish(MmsResult result, PlanStatus status, double seconds
 
 // A translate-only robot has a 2-D C-space: the one slice at its angle is its exact free
 // space, so start and goal are connected iff they lie in the same cell. Complete, no sampling.
-PlanStatus MmsPlanner::solveTranslation(const Pose& start, const Pose& goal, MmsResult& result) {
+PlanStatus OneRobotPlanner::solveTranslation(const Pose& start, const Pose& goal,
+                                             OneRobotResult& result) {
   if (slices().empty()) addSlice(start.theta);
   const Slice& s = slices().front();
   const int a = s.locate({start.x, start.y}), b = s.locate({goal.x, goal.y});
@@ -140,23 +141,24 @@ PlanStatus MmsPlanner::solveTranslation(const Pose& start, const Pose& goal, Mms
   return PlanStatus::Found;
 }
 
-MmsResult MmsPlanner::solve(const Pose& start, const Pose& goal, const Termination& stop,
-                            const std::function<void(const MmsStats&)>& progress) {
+OneRobotResult OneRobotPlanner::solve(const Pose& start, const Pose& goal, const Termination& stop,
+                                      const std::function<void(const OneRobotStats&)>& progress) {
   Stopwatch total;
   const StopScope scope(stop);
   try {
     return solveRounds(start, goal, stop, progress);
   } catch (const Stopped&) {
     // The manifold under construction is dropped; the roadmap stays as it was before it.
-    return finish(MmsResult{}, stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound,
+    return finish(OneRobotResult{}, stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound,
                   total.seconds());
   }
 }
 
-MmsResult MmsPlanner::solveRounds(const Pose& start, const Pose& goal, const Termination& stop,
-                                  const std::function<void(const MmsStats&)>& progress) {
+OneRobotResult OneRobotPlanner::solveRounds(
+    const Pose& start, const Pose& goal, const Termination& stop,
+    const std::function<void(const OneRobotStats&)>& progress) {
   Stopwatch total;
-  MmsResult result;
+  OneRobotResult result;
   stats_.noPath.clear();  // a proof about an earlier query of this roadmap
   scene_.robots[0].start = start;
   scene_.robots[0].goal = goal;

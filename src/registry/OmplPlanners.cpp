@@ -2,8 +2,8 @@
 // parameters that planner reads.
 #include <memory>
 
-#include "api/Adapters.h"
 #include "baselines/OmplPlanner.h"
+#include "registry/Adapters.h"
 
 namespace mms {
 

@@ -1,8 +1,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "api/Adapters.h"
 #include "mms/Errors.h"
+#include "registry/Adapters.h"
 #include "util/Number.h"
 #include "util/Suggest.h"
 

@@ -1,16 +1,16 @@
-// "mms" behind the planner seam: MmsPlanner for one robot, TwoRobotPlanner for two,
+// "mms" behind the planner seam: OneRobotPlanner for one robot, TwoRobotPlanner for two,
 // KRobotPlanner for three and more, chosen by the scene. Parameters are declared here once, with
 // the defaults of the settings structs.
 #include <algorithm>
 #include <memory>
 #include <type_traits>
 
-#include "api/Adapters.h"
 #include "mms/Errors.h"
 #include "planner/KRobotPlanner.h"
-#include "planner/MmsPlanner.h"
+#include "planner/OneRobotPlanner.h"
 #include "planner/Rounds.h"
 #include "planner/TwoRobotPlanner.h"
+#include "registry/Adapters.h"
 #include "util/Parallel.h"
 
 namespace mms {
@@ -55,7 +55,7 @@ void insertAfter(std::vector<std::pair<std::string, double>>& phases, const std:
   phases.insert(at == phases.end() ? at : at + 1, std::move(phase));
 }
 
-PlanStatistics statisticsOf(const MmsStats& s) {
+PlanStatistics statisticsOf(const OneRobotStats& s) {
   const SubspaceStats& m = s.manifolds;
   return commonStatistics(s, m, {{"slices", m.sliceSeconds}, {"lines", m.lineSeconds}});
 }
@@ -105,7 +105,7 @@ PlanStatistics statisticsOf(const KRobotStats& s) {
   return p;
 }
 
-// An MMS result (MmsResult, TwoRobotResult, KRobotResult) as the seam's result.
+// An MMS result (OneRobotResult, TwoRobotResult, KRobotResult) as the seam's result.
 template <class Result>
 PlanResult planResultOf(const Result& r, const std::map<std::string, double>& parameters) {
   PlanResult out;
@@ -128,7 +128,7 @@ std::function<void(const Stats&)> progressOf(const Planner::Progress& progress) 
 enum Param { kThreads, kNTheta, kNLines, kNFixings, kExpandShare, kCoupled };
 
 std::vector<ParamSpec> mmsParams() {
-  const MmsSettings one;
+  const OneRobotSettings one;
   const TwoRobotSettings two;
   const KRobotSettings many;
   // The defaults for one robot, two, and three or more, said once where they agree.
@@ -174,7 +174,7 @@ unsigned threadsOf(double v) { return v == 0 ? hardwareThreads() : unsigned(v); 
 
 class OneRobotMms : public Planner {
  public:
-  OneRobotMms(const Scene& scene, const MmsSettings& settings, bool picture,
+  OneRobotMms(const Scene& scene, const OneRobotSettings& settings, bool picture,
               std::map<std::string, double> parameters)
       : planner_(scene, 0, settings),
         start_(scene.robots[0].start),
@@ -188,7 +188,8 @@ class OneRobotMms : public Planner {
     const PlanStatistics before = spent_;
     Progress perQuery;
     if (progress) perQuery = [&](const PlanStatistics& s) { progress(since(s, before)); };
-    const MmsResult r = planner_.solve(start_, goal_, stop, progressOf<MmsStats>(perQuery));
+    const OneRobotResult r =
+        planner_.solve(start_, goal_, stop, progressOf<OneRobotStats>(perQuery));
     PlanResult out = planResultOf(r, parameters_);
     spent_ = out.stats;
     out.stats = since(out.stats, before);
@@ -218,7 +219,7 @@ class OneRobotMms : public Planner {
     return now;
   }
 
-  MmsPlanner planner_;
+  OneRobotPlanner planner_;
   Pose start_, goal_;
   bool picture_;
   std::map<std::string, double> parameters_;
@@ -282,7 +283,7 @@ std::unique_ptr<Planner> makeMms(const Scene& scene, const PlannerParams& params
                                  const std::string& source) {
   const std::vector<ParamSpec> specs = mmsParams();
   if (scene.robots.size() == 1) {
-    const auto s = settingsFrom<MmsSettings>(params, specs);
+    const auto s = settingsFrom<OneRobotSettings>(params, specs);
     return std::make_unique<OneRobotMms>(
         scene, s, params.roadmapPicture,
         std::map<std::string, double>{{"n_theta", double(s.nTheta)},

@@ -24,7 +24,7 @@
 #include <mutex>
 #include <string>
 
-#include "api/Adapters.h"
+#include "registry/Adapters.h"
 
 namespace mms {
 

@@ -8,7 +8,7 @@
 
 namespace mms {
 
-/// "mms": MMS for one robot (MmsPlanner) or two (TwoRobotPlanner), chosen by the scene.
+/// "mms": MMS for one robot (OneRobotPlanner) or two (TwoRobotPlanner), chosen by the scene.
 PlannerInfo mmsPlannerInfo();
 /// Whether "mms" takes the scene (one or two robots).
 bool mmsTakes(const Scene& scene);
