@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The parameter check behind docs/benchmarks.md's "Tuning" section: the PRM family with k = 5 and
+# The parameter check once behind docs/benchmarks.md's "Tuning" section (in its history): the PRM family with k = 5 and
 # k = 20 neighbours (10 is OMPL's default, in the main report) and RRT-Connect with a shorter and a
 # longer range, on the two scenes where the baselines struggle, beside MMS in the same run.
 # Usage: scripts/bench-tuning.sh [OUTPUT_DIR] (default bench-tuning); about 10 minutes on 2 cores.

@@ -87,13 +87,10 @@ RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from
 inline constexpr size_t kAnglesBeforeFixingsGrow = 16;
 
 /// Whether the next round of a planner for two robots or more grows only the robots' angle
-/// sets, keeping its fixings: while a rigid robot has fewer than kAnglesBeforeFixingsGrow
-/// sequence angles (counted per robot in `angles`, `translates` marking those with none). A
-/// subspace costs an overlay per angle of its moving robot, so a first round with few angles is
-/// cheap; but a passage that needs an angle neither the start's nor the goal's (an L through a
-/// gap between obstacles) is met only as the sets grow, and growing the fixings with them made
-/// each round four times dearer: on such a scene 4 rounds and 68 subspaces, where 16 angles
-/// from the first round solved it with the 4 start and goal subspaces.
+/// sets, keeping its holds: while a rigid robot has fewer than kAnglesBeforeFixingsGrow sequence
+/// angles (counted per robot in `angles`, `translates` marking those with none). A subspace
+/// costs an overlay per angle, so few angles make cheap rounds, while a passage that needs an
+/// angle neither the start's nor the goal's is met only as the sets grow (docs/planner.md).
 template <class Counts, class Flags>
 bool anglesFirst(const Counts& angles, const Flags& translates) {
   for (size_t r = 0; r < angles.size(); ++r)

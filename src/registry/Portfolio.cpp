@@ -30,36 +30,18 @@ namespace mms {
 
 namespace {
 
-/// The sampler in the race: in open clutter RRT-Connect was the fastest of OMPL's planners
-/// with default parameters (docs/benchmarks.md). Its path is returned as found (OMPL's
-/// simplifier would cost 1-3 ms, as much as the search on open scenes): smoothing belongs to a
-/// certified post-processing step for every planner alike.
+/// The sampler in the race: the fastest of OMPL's planners in open clutter (docs/planner.md).
 constexpr const char* kSampler = "rrtconnect";
 /// How the sampler runs (`--planner rrtconnect` with these reproduces its paths): motions
-/// certified by clearance as it adds them, where OMPL checks poses at its resolution (in open
-/// clutter a few clearances cover a motion: 1.7x faster on seeds 1-10; 1.02x slower on the
-/// bends), and each robot's uniform samples redrawn until it is clear of the obstacles, so
-/// that the trees grow towards free space (bends, whose corridor fills a fifth of the box, and
-/// discs round a block: about 2-3x faster).
+/// certified by clearance, and samples redrawn until clear, so its trees grow into free space.
 const std::map<std::string, double> kSamplerParams{{"certified-motions", 1}, {"free-samples", 1}};
-/// How long the sampler runs alone before MMS starts: what MMS gives up on narrow scenes,
-/// against the cost of a second thread and of MMS's stopping (it checks the limit between
-/// exact steps) to a sampler that would have won soon after. On the tuning scenes (open
-/// clutter and bends, seeds 1-10; corridor corner and bar-slot) 2 ms left the open scenes as
-/// they were with 5 ms and took auto from 2.05x MMS's time to 1.6x on the narrow ones; 1 ms
-/// cost the open scenes 4 %. The second thread then takes 0.1-2 ms to get going on this
-/// machine.
+/// How long the sampler runs alone before MMS starts: on open scenes it is then often done,
+/// and no second thread is paid for (docs/planner.md, "The default: a portfolio").
 constexpr std::chrono::milliseconds kHeadStart{2};
 
-/// MMS allocates and frees large blocks all the time (exact arrangements); with glibc's default
-/// thresholds each such block is mapped and unmapped, or the heap's top trimmed, and every one
-/// takes the process's memory-map lock, which the sampler's page faults need too: on the bends
-/// (seeds 1-10) RRT-Connect took 1.7x as long beside MMS in the same process as alone, and
-/// 1.03x with blocks up to 32 MB kept in the heap and 64 MB of free top kept. Set once for the
-/// process: what the portfolio costs a program that embeds it is that memory kept. (The command
-/// line allocates through jemalloc, which keeps per-thread caches and ignores these settings.)
-/// Also once:
-/// what a second thread needs loaded before memory runs out (below).
+/// MMS's large blocks kept in the heap, so that mapping them does not hold the memory-map lock
+/// the sampler's page faults need (the command line's jemalloc ignores this); and what a second
+/// thread needs loaded before memory runs out. Once per process.
 void prepareTheProcess() {
   static std::once_flag once;
   std::call_once(once, [] {
@@ -73,19 +55,10 @@ void prepareTheProcess() {
   });
 }
 
-/// Keeps the two members of the race on different cores. Left to the scheduler, a new thread
-/// often starts on its creator's core and stays there for milliseconds, which is the whole race
-/// on open scenes: with two cores, RRT-Connect beside MMS (or beside a mere busy loop, in this
-/// process or another) took 1.2-1.6x its time alone on the bends, and MMS in the portfolio 1.6x
-/// its time alone on the corridor corner. So, once MMS starts, the sampler's thread keeps the
-/// core it is on and MMS (with any threads it starts) gets every other core the process may
-/// use; the sampler's thread gets its cores back when the race is over. With one core there is
-/// nothing to do.
-///
-/// MMS's thread is created with its cores (a thread attribute), not moved there once running:
-/// a thread created by the pinned sampler inherits the sampler's one core and waits there until
-/// the sampler's time slice ends, 1.3-5 ms on this machine (bar-slot, measured from the thread's
-/// creation to its first instruction), before it can move itself.
+/// Keeps the two members of the race on different cores: left to the scheduler a new thread
+/// often shares its creator's core for milliseconds, the whole race on open scenes. MMS's
+/// thread is created with its cores rather than moved there, which would wait for the sampler's
+/// time slice (docs/planner.md, "The default: a portfolio").
 class CoresApart {
  public:
   CoresApart() = default;

@@ -3,7 +3,7 @@
 // CGAL's lazy exact kernel guards every object's exact value with std::call_once, which
 // libstdc++ implements with pthread_once. glibc's pthread_once makes a futex wake system call
 // after each initialisation, whether or not any thread waits: 25 000 calls in a 60 ms plan of
-// the niche swap, a tenth of an exact slice's time in perf (docs/benchmarks.md, "Exact values
+// the niche swap, a tenth of an exact slice's time in perf (docs/benchmarks.md's history, "Exact values
 // without a system call each"). This one wakes only when a thread is waiting.
 //
 // Defining pthread_once in an executable takes the place of glibc's for the whole process (the
