@@ -192,10 +192,8 @@ class ProgressLines {
 
 // The queries to answer: the scene's own, or those of --queries (one-robot MMS only, as is the
 // roadmap's picture in the path file).
-std::vector<Query> queriesOf(const PlanArgs& a, const Scene& scene) {
-  const PlannerInfo* info = findPlanner(a.planner);
-  if (!info) throw InputError("--planner: unknown planner '" + a.planner + "'");
-  const bool oneRoadmap = info->multiQuery && scene.robots.size() == 1;
+std::vector<Query> queriesOf(const PlanArgs& a, const Scene& scene, bool multiQuery) {
+  const bool oneRoadmap = multiQuery && scene.robots.size() == 1;
   const std::string why =
       a.scene + " has " + std::to_string(scene.robots.size()) + " robots, planner " + a.planner;
   if (!a.queries.empty() && !oneRoadmap)
@@ -222,7 +220,9 @@ int plan(const PlanArgs& a) {
        {std::pair{a.output, "-o"}, {a.svg, "--svg"}, {a.statsJson, "--stats-json"}})
     checkWritable(path, option);
   const Scene scene = readScene(a.scene, a.quiet);
-  const std::vector<Query> queries = queriesOf(a, scene);
+  // An unknown planner is the registry's to name (makePlanner, below).
+  const PlannerInfo* info = findPlanner(a.planner);
+  const std::vector<Query> queries = queriesOf(a, scene, info && info->multiQuery);
   PlannerParams params = a.params;
   params.seed = a.seed;
   params.roadmapPicture = a.saveRoadmap || a.svgRoadmap;

@@ -36,29 +36,35 @@ const PlannerInfo* findPlanner(const std::string& name) {
   return nullptr;
 }
 
+namespace {
+// "a, b, c", each name after `prefix`.
+std::string listed(const std::vector<std::string>& names, const std::string& prefix) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + prefix + n;
+  return out;
+}
+}  // namespace
+
 std::unique_ptr<Planner> makePlanner(const std::string& name, const Scene& scene,
                                      const PlannerParams& params, const std::string& source) {
   const PlannerInfo* info = findPlanner(name);
   if (!info) {
-    std::string known;
     std::vector<std::string> names;
-    for (const PlannerInfo& p : planners())
-      known += (known.empty() ? "" : ", ") + p.name, names.push_back(p.name);
-    throw InputError("--planner: unknown planner '" + name + "' (known: " + known + ")" +
-                     didYouMean(name, names));
+    for (const PlannerInfo& p : planners()) names.push_back(p.name);
+    throw InputError("--planner: unknown planner '" + name + "' (known: " + listed(names, "") +
+                     ")" + didYouMean(name, names));
   }
   for (const auto& [given, value] : params.values) {
     const ParamSpec* spec = nullptr;
     for (const ParamSpec& s : info->params)
       if (s.name == given) spec = &s;
     if (!spec) {
-      std::string known;
       std::vector<std::string> names;
-      for (const ParamSpec& s : info->params)
-        known += (known.empty() ? "--" : ", --") + s.name, names.push_back(s.name);
-      throw InputError("--" + given + ": not a parameter of planner " + name +
-                       (known.empty() ? " (it has none)" : " (its parameters: " + known + ")") +
-                       didYouMean(given, names));
+      for (const ParamSpec& s : info->params) names.push_back(s.name);
+      throw InputError(
+          "--" + given + ": not a parameter of planner " + name +
+          (names.empty() ? " (it has none)" : " (its parameters: " + listed(names, "--") + ")") +
+          didYouMean(given, names));
     }
     if (const std::string why = spec->problem(value); !why.empty())
       throw InputError("--" + given + ": " + why);

@@ -66,10 +66,11 @@ Vec2 turned(Vec2 p, double a) {
 }
 }  // namespace
 
-Scene carryTurnScene(uint64_t seed) {
+Scene carryTurnScene(uint64_t seed, double playShare) {
   Random rng(seed);
   const double w = rng.uniform(0.8, 1.2), h = w * rng.uniform(0.7, 1.3);  // the part
-  const double play = rng.uniform(0.04, 0.1) * std::max(w, h);
+  const double drawn = rng.uniform(0.04, 0.1);  // drawn always: a given play changes nothing else
+  const double play = (playShare >= 0 ? playShare : drawn) * std::max(w, h);
   const double wall = rng.uniform(0.2, 0.35) * std::max(w, h);  // the gripper's walls
   // The pair in the gripper's frame, centred on its bounding box: back wall at the left, the
   // pocket open to the right, the part in the pocket with the play all round.

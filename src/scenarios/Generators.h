@@ -38,8 +38,17 @@ Scene randomPolygonsTwoRobots(uint64_t seed = 1);
 /// pocket's play of each other. Random per seed: the part's size and aspect, the play (0.04-0.1 of
 /// the part's size), the gripper's walls, the corridor's length and slack, the chamber's slack, the
 /// direction of the corridor (a quarter turn) and of the turn. The chamber is centred at the
-/// origin.
-Scene carryTurnScene(uint64_t seed);
+/// origin. `play` >= 0 sets the play (a share of the part's size) instead of the seed.
+Scene carryTurnScene(uint64_t seed, double play = -1);
+
+/// A key through a keyhole: a key (a bow and a shaft, 1.4-2.2 long) stands upright in a room
+/// below a thick wall, passes a keyhole slot barely wider than its bow into an octagonal
+/// chamber whose inscribed circle clears the key's smallest turning circle by `slack` (0.03-0.12
+/// from the seed unless given), turns a quarter there (no room to turn anywhere else) and leaves
+/// lying down through a slot in the side wall. Random per seed: the key's proportions, the
+/// slots' places along the chamber's sides, the walls' thickness, which way the key points, a
+/// quarter turn and a mirror image of the whole.
+Scene keyholeScene(uint64_t seed, double slack = -1);
 
 /// Niche swap: two robots of random blocky shapes swap the ends of a corridor too narrow for
 /// them to pass each other; a niche in one wall, at a random place, fits either robot at angle 0

@@ -352,3 +352,38 @@ TEST(ScenarioOpenClutter, FreeEndsAndPathsOnEverySeed) {
   }
   EXPECT_EQ(robotCounts, (std::set<size_t>{1, 2}));
 }
+
+// A key through a keyhole: a quarter turn from start to goal, a path on every seed (found by
+// MMS, certified by the independent checker); the same seed gives the same scene, and a slack
+// given changes the chamber alone (the key, its poses and the walls' number stay).
+TEST(ScenarioKeyhole, EverySeedIsAQuarterTurnWithAPath) {
+  for (uint64_t seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE(seed);
+    const Scene s = keyholeScene(seed);
+    ASSERT_NO_THROW(parseScene(sceneToJson(s), "keyhole"));
+    const Robot& key = s.robots.at(0);
+    EXPECT_NEAR(std::abs(std::remainder(key.goal.theta - key.start.theta, 2 * M_PI)), M_PI / 2,
+                1e-9);
+    const CollisionChecker checker(s);
+    const std::unique_ptr<Planner> planner = makePlanner("mms", s, {seed, {}});
+    const PlanResult r = planner->solve(Termination(test::planSeconds(30)));
+    ASSERT_EQ(r.status, PlanStatus::Found);
+    EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
+  }
+  EXPECT_EQ(sceneToJson(keyholeScene(4)), sceneToJson(keyholeScene(4)));
+  EXPECT_NE(sceneToJson(keyholeScene(4)), sceneToJson(keyholeScene(5)));
+  const Scene tight = keyholeScene(4, 0.03), loose = keyholeScene(4, 0.12);
+  EXPECT_EQ(tight.robots.at(0).shape, loose.robots.at(0).shape);
+  EXPECT_EQ(tight.robots.at(0).start.theta, loose.robots.at(0).start.theta);
+  EXPECT_EQ(tight.obstacles.size(), loose.obstacles.size());
+  EXPECT_NE(sceneToJson(tight), sceneToJson(loose));
+}
+
+// Carry-turn's play can be asked for (down to a tight grip): the scene's seed draws the rest.
+TEST(ScenarioCarryTurn, PlayGivenChangesTheGripAlone) {
+  const Scene tight = carryTurnScene(3, 0.03), seeded = carryTurnScene(3);
+  EXPECT_EQ(tight.robots.at(1).shape, seeded.robots.at(1).shape);  // the part
+  EXPECT_NE(tight.robots.at(0).shape, seeded.robots.at(0).shape);  // the gripper's pocket
+  const CollisionChecker checker(tight);
+  EXPECT_TRUE(checkPath(tight, checker, turnTogether(tight)).ok);
+}
