@@ -80,7 +80,10 @@ void HeldRobotPlanner::addAngles(size_t robot, const std::vector<double>& thetas
   if (!moving.empty())
     addOverlays((base_[robot].size() - firstAngle) * moving.size(),
                 [&](size_t i) -> std::pair<Subspace*, const Slice*> {
-                  return {moving[i % moving.size()], &base_[robot][firstAngle + i / moving.size()]};
+                  const size_t n = base_[robot].size() - firstAngle, m = moving.size();
+                  if (overlaysBySubspace_)
+                    return {moving[i / n], &base_[robot][firstAngle + i % n]};
+                  return {moving[i % m], &base_[robot][firstAngle + i / m]};
                 });
   anglesAdded(robot, firstAngle, stop);
   collectCells(firstNode);

@@ -30,9 +30,10 @@ struct HeldRobotSettings {
   uint64_t seed = 1;
   // Angles of robot r: nTheta + r besides its start and goal angles, in all its subspaces.
   size_t nTheta = 4;
-  // Random lines of a new subspace; those holding a robot at its start or goal add nLines,
-  // 2 nLines, ... more in rounds 2, 3, ...
+  // Random lines of a new subspace; with growRootLines, those holding a robot at its start or
+  // goal add nLines, 2 nLines, ... more in rounds 2, 3, ...
   size_t nLines = 128;
+  bool growRootLines = true;
   // Slices at the middles of narrow free arcs of a subspace's lines that no shared angle meets
   // (local to the subspace), at most this many each time a subspace's new lines are scanned.
   size_t narrowSlices = 8;
@@ -159,6 +160,10 @@ class HeldRobotPlanner {
   size_t rootSubspaces_ = 0;  // the first ones, holding robots at start and goal (placeEnds)
   HeldRobotStats& common_;
   Stopwatch clock_;
+  // New angles' overlays are added subspace by subspace (else angle by angle). The order only
+  // numbers the nodes, but that steers the random draws: the k-robot policy keeps the order it
+  // was tuned with (angle by angle gave it longer tails on niche-three, docs/planner.md).
+  bool overlaysBySubspace_ = false;
 
  private:
   void buildBaseSlices(const Termination& stop);

@@ -14,7 +14,9 @@ bool samePose(const Pose& a, const Pose& b) {
 }  // namespace
 
 KRobotPlanner::KRobotPlanner(const Scene& scene, KRobotSettings settings)
-    : HeldRobotPlanner(scene, settings, stats_), hold_(settings), target_(settings.nTuples) {}
+    : HeldRobotPlanner(scene, settings, stats_), hold_(settings), target_(settings.nTuples) {
+  overlaysBySubspace_ = true;
+}
 
 KRobotPlanner::~KRobotPlanner() = default;
 

@@ -33,8 +33,12 @@ namespace mms {
 
 struct KRobotSettings : HeldRobotSettings {
   // More angles than two robots' (TwoRobotSettings): runs that needed more tuples waited for
-  // the angles (docs/planner.md).
-  KRobotSettings() { nTheta = 16; }
+  // the angles. The 2k root subspaces' growing lines cost more than they found here
+  // (docs/planner.md).
+  KRobotSettings() {
+    nTheta = 16;
+    growRootLines = false;
+  }
   size_t nTuples = 8;  // tuples grown in the first round; doubles every round, with the angles
   // Share of growth points drawn near a vertex of their cell (a robot tucked into a corner, out
   // of the others' way); the rest uniform in the cell.
