@@ -44,8 +44,8 @@ Scene carryTurnScene(uint64_t seed, double play = -1);
 /// A key through a keyhole: a key (a bow and a shaft, 1.4-2.2 long) stands upright in a room
 /// below a thick wall, passes a keyhole slot barely wider than its bow into an octagonal
 /// chamber whose inscribed circle clears the key's smallest turning circle by `slack` (0.03-0.12
-/// from the seed unless given), turns a quarter there (no room to turn anywhere else) and leaves
-/// lying down through a slot in the side wall. Random per seed: the key's proportions, the
+/// from the seed unless given), turns a quarter there (the one place between the slots with room
+/// to turn) and leaves lying down through a slot in the side wall. Random per seed: the key's proportions, the
 /// slots' places along the chamber's sides, the walls' thickness, which way the key points, a
 /// quarter turn and a mirror image of the whole.
 Scene keyholeScene(uint64_t seed, double slack = -1);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "geometry/PolygonOps.h"
 #include "scenarios/Generators.h"
 
 namespace mms {
@@ -11,15 +12,6 @@ namespace {
 
 Ring box(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
-double signedArea(const Ring& r) {
-  double a = 0;
-  for (size_t i = 0; i < r.size(); ++i) {
-    const Vec2 p = r[i], q = r[(i + 1) % r.size()];
-    a += p.x * q.y - q.x * p.y;
-  }
-  return a / 2;
 }
 
 // The chamber's walls: the bounding box's rectangles around the rooms and slots, and the four
@@ -92,7 +84,7 @@ Scene keyholeScene(uint64_t seed, double slack) {
   };
   for (Ring& o : scene.obstacles) {
     for (Vec2& v : o) v = place(v);
-    if (signedArea(o) < 0) o = Ring(o.rbegin(), o.rend());
+    if (signedArea2(o) < 0) o = Ring(o.rbegin(), o.rend());
   }
   if (mirror) {
     for (Vec2& v : k.shape) v.y = -v.y;  // the key mirrored in its own axis, as the scene is
