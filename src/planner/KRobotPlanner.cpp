@@ -25,19 +25,22 @@ KRobotResult KRobotPlanner::solve(const Termination& stop,
   return solveReporting(stop, progress, stats_);
 }
 
-long KRobotPlanner::existing(size_t moving, const Tuple& t) const {
+// Where t holds every robot but `moving`.
+std::vector<std::pair<size_t, Pose>> KRobotPlanner::heldBy(size_t moving, const Tuple& t) const {
   std::vector<std::pair<size_t, Pose>> held;
   for (size_t r = 0; r < k_; ++r)
     if (r != moving) held.emplace_back(r, t[r].pose);
-  return findSubspace(moving, held);
+  return held;
+}
+
+long KRobotPlanner::existing(size_t moving, const Tuple& t) const {
+  return findSubspace(moving, heldBy(moving, t));
 }
 
 // The subspace in which `moving` moves and the others stay where t puts them, built if new.
 size_t KRobotPlanner::subspaceFor(size_t moving, const Tuple& t, const Termination& stop) {
-  if (const long e = existing(moving, t); e >= 0) return size_t(e);
-  std::vector<std::pair<size_t, Pose>> held;
-  for (size_t r = 0; r < k_; ++r)
-    if (r != moving) held.emplace_back(r, t[r].pose);
+  const std::vector<std::pair<size_t, Pose>> held = heldBy(moving, t);
+  if (const long e = findSubspace(moving, held); e >= 0) return size_t(e);
   tuples_.push_back(t);
   return addSubspace(moving, held, stop);
 }

@@ -77,6 +77,7 @@ class KRobotPlanner : public HeldRobotPlanner {
   void nextTargets(bool fixingsGrow) override;
 
   size_t subspaceFor(size_t moving, const Tuple& t, const Termination& stop);
+  std::vector<std::pair<size_t, Pose>> heldBy(size_t moving, const Tuple& t) const;
   long existing(size_t moving, const Tuple& t) const;
   void join(const Tuple& t);
   std::optional<std::pair<size_t, Placement>> growthPoint();
