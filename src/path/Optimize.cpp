@@ -39,12 +39,19 @@ class Optimizer {
   void run(std::vector<Config>& w) {
     limit_ = settings_.maxWork;
     turnShortWay(w);
-    for (size_t pass = 0; pass < settings_.passes && !done(); ++pass) {
+    // Rounds of shortcuts until one stops paying: the first rounds take most of what there is,
+    // and on an easy scene the rest would cost more than the planning did.
+    double cost = pathCost(checker_, w);
+    for (size_t round = 0; round < settings_.rounds && !done(); ++round) {
       const size_t before = s_.accepted;
       for (size_t a = 0; a < settings_.attempts && !done() && w.size() >= 2; ++a)
         shortcut(w, /*partial=*/rng_.below(3) != 0);
       dropStraightWaypoints(w);
-      if (s_.accepted == before) break;
+      if (s_.accepted > before) turnShortWay(w);  // shortcuts may have joined turns
+      const double now = pathCost(checker_, w);
+      ++s_.rounds;
+      if (s_.accepted == before || cost - now < settings_.minGain * cost) break;
+      cost = now;
     }
     if (settings_.objective == PathObjective::Clearance) {
       limit_ = s_.evaluations * workPerEvaluation_ + settings_.maxWork;  // a budget of its own
@@ -69,22 +76,119 @@ class Optimizer {
     return check(stretch).ok;
   }
 
-  // A turn of more than half a circle the other way round: the rest of the path is the same
-  // motion shifted by a full turn, so only the segment itself needs certifying.
+  // A stretch in which a robot turns more than half a circle in all, turned the other way
+  // round. The rest of the path is the same motion shifted by a full turn, so only the stretch
+  // needs certifying. Turns split across waypoints and across moves at a fixed angle (an MMS
+  // path turns on lines and moves in slices) count as one: each window from the start of one
+  // run of turning segments to the end of another is a candidate, the largest saving first.
   void turnShortWay(std::vector<Config>& w) {
-    for (size_t i = 0; i < scene_.robots.size(); ++i) {
-      if (!rigid(i)) continue;
-      for (size_t j = 0; j + 1 < w.size() && !done(); ++j) {
-        const double d = w[j + 1][3 * i + 2] - w[j][3 * i + 2];
-        if (std::fabs(d) <= M_PI + 1e-9) continue;
-        const double shift = -2 * M_PI * std::round(d / (2 * M_PI));
-        Config next = w[j + 1];
-        next[3 * i + 2] += shift;
-        if (!certified({w[j], next})) continue;
-        for (size_t k = j + 1; k < w.size(); ++k) w[k][3 * i + 2] += shift;
-        ++s_.accepted;
+    for (size_t i = 0; i < scene_.robots.size(); ++i)
+      while (rigid(i) && !done() && rewindOnce(w, i)) ++s_.accepted;
+  }
+
+  using Run = std::pair<size_t, size_t>;  // waypoints at the ends of a run of turning segments
+
+  struct Rewind {
+    size_t p, q;    // the window's first and last runs
+    double turns;   // full turns added at the window's end and after
+    double saving;  // rotation saved
+  };
+
+  static std::vector<Run> turningRuns(const std::vector<Config>& w, size_t c) {
+    std::vector<Run> runs;
+    for (size_t k = 0; k + 1 < w.size(); ++k) {
+      if (w[k + 1][c] == w[k][c]) continue;
+      if (!runs.empty() && runs.back().second == k)
+        runs.back().second = k + 1;
+      else
+        runs.emplace_back(k, k + 1);
+    }
+    return runs;
+  }
+
+  static std::vector<Rewind> rewinds(const std::vector<Config>& w, const std::vector<Run>& runs,
+                                     size_t c) {
+    std::vector<double> turned{0};  // rotation up to each waypoint
+    for (size_t k = 1; k < w.size(); ++k)
+      turned.push_back(turned.back() + std::fabs(w[k][c] - w[k - 1][c]));
+    std::vector<Rewind> out;
+    for (size_t p = 0; p < runs.size(); ++p)
+      for (size_t q = p; q < runs.size(); ++q) {
+        const size_t from = runs[p].first, to = runs[q].second;
+        const double net = w[to][c] - w[from][c], turns = -std::round(net / (2 * M_PI));
+        if (turns == 0) continue;
+        const double saving = turned[to] - turned[from] - std::fabs(net + 2 * M_PI * turns);
+        out.push_back({p, q, turns, saving});
+      }
+    std::stable_sort(out.begin(), out.end(), [](const Rewind& a, const Rewind& b) {
+      return a.saving > b.saving + 1e-9 || (a.saving > b.saving - 1e-9 && a.q - a.p < b.q - b.p);
+    });
+    return out;
+  }
+
+  // Where a window's new turn goes. All its runs scaled to it, or spread evenly over the
+  // window's cost; or the full turns added in one run (that run turns the other way round), or
+  // half in each of two (between them the robot is held half a turn round: a key that turned a
+  // quarter the long way in its chamber, left through a slot with its bit first and turned half
+  // round outside, turns a quarter the other way and leaves bit last).
+  struct Carrier {
+    enum Kind { Scaled, Spread, Runs } kind;
+    size_t first = 0, second = 0;  // runs, for Runs (second == first: one run)
+  };
+
+  // The first candidate that certifies, taken; whether there was one.
+  bool rewindOnce(std::vector<Config>& w, size_t robot) {
+    const size_t c = 3 * robot + 2;
+    const std::vector<Run> runs = turningRuns(w, c);
+    const std::vector<double> cum = cumulativeCost(w);
+    size_t tries = 0;
+    for (const Rewind& r : rewinds(w, runs, c)) {
+      const size_t from = runs[r.p].first, to = runs[r.q].second;
+      std::vector<Carrier> carriers{{Carrier::Scaled}};
+      for (size_t p = r.p; p <= r.q && r.q > r.p; ++p)
+        for (size_t q = p; q <= r.q; ++q) carriers.push_back({Carrier::Runs, p, q});
+      carriers.push_back({Carrier::Spread});
+      for (const Carrier& carrier : carriers) {
+        if (tries++ == kRewindTries || done()) return false;
+        std::vector<Config> stretch(w.begin() + long(from), w.begin() + long(to) + 1);
+        double before = 0, after = 0;
+        for (size_t k = 1; k < stretch.size(); ++k) {
+          stretch[k][c] = rewound(w, cum, runs, carrier, r, from + k, c);
+          before += std::fabs(w[from + k][c] - w[from + k - 1][c]);
+          after += std::fabs(stretch[k][c] - stretch[k - 1][c]);
+        }
+        if (after > before - 1e-6) continue;  // this carrier turns as much or more
+        if (!certified(stretch)) continue;
+        std::copy(stretch.begin(), stretch.end(), w.begin() + long(from));
+        for (size_t k = to + 1; k < w.size(); ++k) w[k][c] += 2 * M_PI * r.turns;
+        return true;
       }
     }
+    return false;
+  }
+
+  // The robot's new angle at waypoint `at` (c: its angle coordinate).
+  static double rewound(const std::vector<Config>& w, const std::vector<double>& cum,
+                        const std::vector<Run>& runs, const Carrier& carrier, const Rewind& r,
+                        size_t at, size_t c) {
+    const size_t from = runs[r.p].first, to = runs[r.q].second;
+    const double a = w[from][c], net = w[to][c] - a, target = net + 2 * M_PI * r.turns;
+    if (carrier.kind == Carrier::Scaled) return a + target * (w[at][c] - a) / net;
+    if (carrier.kind == Carrier::Spread)
+      return a + target * (cum[at] - cum[from]) / (cum[to] - cum[from]);
+    // How far through a run the robot is at `at`: by its turn, or by cost if it turns back.
+    auto through = [&](size_t run) {
+      const auto [first, last] = runs[run];
+      if (at <= first) return 0.0;
+      if (at >= last) return 1.0;
+      const double own = w[last][c] - w[first][c];
+      return own != 0 ? (w[at][c] - w[first][c]) / own
+                      : (cum[at] - cum[first]) / (cum[last] - cum[first]);
+    };
+    const double added = carrier.first == carrier.second
+                             ? through(carrier.first)
+                             : 0.5 * (through(carrier.first) + through(carrier.second));
+    return w[at][c] + 2 * M_PI * r.turns * added;
   }
 
   // The index of a waypoint at arc parameter `s` (cumulative cost), inserted on its segment
@@ -234,6 +338,7 @@ class Optimizer {
   const OptimizeSettings& settings_;
   const Termination& stop_;
   OptimizeStats& s_;
+  static constexpr size_t kRewindTries = 32;  // certifications per robot and change
   PathCheckSettings quick_;
   size_t limit_ = 0;  // work at which the current step ends
   size_t workPerEvaluation_ =

@@ -5,8 +5,9 @@
 //
 // Cost is the bound the certifier uses on how far a robot's points move: per robot and segment
 // |dp| + radius * |dtheta|, summed. It falls with each step below:
-//  - turn the short way: a rigid robot's turn of more than half a circle in one segment is
-//    replaced by the turn the other way round, when that is free;
+//  - turn the short way: where a rigid robot turns more than half a circle in all over a
+//    stretch (turns split across waypoints and fixed-angle moves count as one), the stretch
+//    turning the other way round, its new turn put where the robot turned;
 //  - shortcuts between two points anywhere on the path (not only waypoints), all robots at once;
 //  - partial shortcuts (as OMPL's PathSimplifier): one robot's translation, or its rotation, or
 //    both, straightened over a stretch while everything else keeps its timing. This is what
@@ -15,7 +16,8 @@
 // The objective "clearance" then moves waypoints away from contacts while the path stays
 // certified and no segment's smallest clearance falls.
 //
-// Bounded by attempts (a seed fixes the result) and by `stop` (the planner's time limit).
+// Rounds of shortcuts end once one stops paying. Bounded by attempts (a seed fixes the result)
+// and by `stop` (the planner's time limit).
 #include <cstddef>
 #include <vector>
 
@@ -30,8 +32,10 @@ enum class PathObjective { Length, Clearance };
 
 struct OptimizeSettings {
   PathObjective objective = PathObjective::Length;
-  size_t attempts = 400;         // shortcut attempts, full and partial, per pass
-  size_t passes = 4;             // passes end early once one changes nothing
+  size_t attempts = 400;  // shortcut attempts, full and partial, per round
+  size_t rounds = 4;
+  /// Rounds end once one shortens the path by less than this share of its cost.
+  double minGain = 0.01;
   size_t clearanceAttempts = 0;  // waypoint moves for the clearance objective (0: 50 per waypoint)
   /// The certifier's work over all candidates, in clearances of one robot (an evaluation of k
   /// robots counts k + k(k-1)/2: each robot, each pair), so that a seed fixes the result and k
@@ -43,6 +47,7 @@ struct OptimizeSettings {
 struct OptimizeStats {
   double costBefore = 0, costAfter = 0;
   size_t accepted = 0;     // changes taken
+  size_t rounds = 0;       // rounds of shortcuts run
   size_t checked = 0;      // candidate stretches given to the certifier
   size_t evaluations = 0;  // the certifier's evaluations for them (of all robots)
   double seconds = 0;

@@ -92,6 +92,62 @@ TEST(Optimize, TurnsTheShortWayRound) {
   EXPECT_NEAR(rotationOf(w, 0), 0.5 * M_PI, 1e-9);
 }
 
+// Turning alone, without a single shortcut: the turn chosen per stretch, not per segment.
+double turnedShortWay(const Scene& s, std::vector<Config>& w) {
+  const CollisionChecker checker(s);
+  Random rng(1);
+  OptimizeSettings settings;
+  settings.attempts = 0;
+  optimizePath(s, checker, rng, settings, Termination(60), w);
+  return rotationOf(w, 0);
+}
+
+// Three quarter turns the long way, split by moves at a fixed angle (as MMS's lines and
+// slices give them): one quarter turn the other way, spread over the same stretch.
+TEST(Optimize, TurnsSplitAcrossWaypointsAndMovesAreTurnedTheShortWayAsOne) {
+  Scene s = room(1);
+  s.robots[0].goal = {18, 2, 1.5 * M_PI};
+  std::vector<Config> w{{2, 2, 0},     {2, 2, M_PI / 2},    {6, 2, M_PI / 2},   {6, 2, M_PI},
+                        {10, 2, M_PI}, {10, 2, 1.5 * M_PI}, {18, 2, 1.5 * M_PI}};
+  ASSERT_TRUE(certified(s, w));
+  EXPECT_NEAR(turnedShortWay(s, w), 0.5 * M_PI, 1e-9);
+  EXPECT_TRUE(certified(s, w));
+  EXPECT_NEAR(translationOf(w, 0), 16, 1e-9);
+}
+
+// A bar passes a slot lying down. It turned a quarter one way before the slot and half round
+// after it; turned a quarter the other way it passes the slot the other way round, and needs no
+// half turn: the two turns change by half a turn each, the slot's angle by half a turn.
+TEST(Optimize, AHalfTurnHeldThroughASlotIsTurnedAway) {
+  Scene s = room(1);
+  s.obstacles = {{{9, 0}, {11, 0}, {11, 4.75}, {9, 4.75}},
+                 {{9, 5.25}, {11, 5.25}, {11, 10}, {9, 10}}};
+  s.robots[0].start = {5, 5, M_PI / 2};
+  s.robots[0].goal = {15, 5, 0};
+  std::vector<Config> w{{5, 5, M_PI / 2}, {5, 5, M_PI}, {15, 5, M_PI}, {15, 5, 2 * M_PI}};
+  ASSERT_TRUE(certified(s, w));
+  // Turned evenly instead, the bar would meet the slot askew.
+  std::vector<Config> askew = w;
+  askew[1][2] = askew[2][2] = M_PI / 3;
+  EXPECT_FALSE(certified(s, askew));
+  EXPECT_NEAR(turnedShortWay(s, w), 0.5 * M_PI, 1e-9);
+  EXPECT_TRUE(certified(s, w));
+}
+
+// Rounds of shortcuts end once one stops paying: a path optimised once is given one round
+// more, not the four a fresh path may take.
+TEST(Optimize, RoundsStopOnceTheyStopPaying) {
+  const Scene s = wallWithGap();
+  std::vector<Config> w{{2, 5, 0},    {4, 1, 1},   {8.2, 5, 0}, {10, 5, 0},
+                        {11.8, 5, 0}, {14, 9, -1}, {18, 5, 0}};
+  const OptimizeStats first = optimize(s, w);
+  EXPECT_GE(first.rounds, 2u);
+  const OptimizeStats again = optimize(s, w, 2);
+  EXPECT_EQ(again.rounds, 1u);
+  EXPECT_GT(again.costAfter, 0.99 * again.costBefore);
+  EXPECT_TRUE(certified(s, w));
+}
+
 TEST(Optimize, KeepsThePathThroughAGapCertifiedAndMakesItShorter) {
   const Scene s = wallWithGap();
   std::vector<Config> w{{2, 5, 0},    {4, 1, 1},   {8.2, 5, 0}, {10, 5, 0},
