@@ -25,7 +25,7 @@ esac
 out=${2:-bench-generalization-$set_name}
 limit=${LIMIT:-10}
 jobs=${JOBS:-2}
-families=${FAMILIES:-carry-turn niche-swap niche-three discs-swap discs-room open-clutter bend doors}
+families=${FAMILIES:-carry-turn niche-swap niche-three discs-swap discs-room open-clutter bend doors keyhole swallow}
 planners=${PLANNERS:-auto,mms,prm,prm-bridge,rrtconnect,kpiece}
 
 if [[ ! -x build/mms ]]; then

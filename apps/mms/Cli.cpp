@@ -460,15 +460,16 @@ Command addScenario(CLI::App& app) {
       "other's places), discs-room (--seed, --robots: discs cross an open room among "
       "obstacles), open-clutter (--seed: one or two L-shaped robots cross random "
       "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor), doors "
-      "(--seed: a long robot lines up with the doors of 1-3 thin walls) or keyhole (--seed, "
+      "(--seed: a long robot lines up with the doors of 1-3 thin walls), keyhole (--seed, "
       "--slack: a key passes a keyhole, turns a quarter in a chamber barely larger than its "
-      "turn, and leaves through a side slot)",
+      "turn, and leaves through a side slot) or swallow (--seed, --slack: a U takes a part into "
+      "its mouth and turns half round about it in a bay barely larger than that turn)",
       [](CLI::App* scenarioCmd, ScenarioArgs& sa) {
         scenarioCmd
             ->add_option("NAME", sa.name,
                          "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
                          "carry-turn, niche-swap, niche-three, discs-swap, discs-room, "
-                         "open-clutter, bend, doors or keyhole")
+                         "open-clutter, bend, doors, keyhole or swallow")
             ->required()
             ->check(CLI::IsMember(mms::scenarioNames()));
         outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");
@@ -497,8 +498,8 @@ Command addScenario(CLI::App& app) {
                     "assembly-1/2: the play between parts and walls, at most 0.15 (the "
                     "smaller, the tighter); niche-swap and carry-turn: the play around a robot, "
                     "a share of its size (default: 0.04-0.1 from the seed; 0.5 is roomy); "
-                    "keyhole: what the chamber's inscribed circle clears the key's turning "
-                    "circle by (default: 0.03-0.12 from the seed)")
+                    "keyhole and swallow: what the chamber's (the bay's) inscribed circle clears "
+                    "the turning circle by (default: 0.03-0.12 from the seed)")
                 ->capture_default_str()
                 ->check(CLI::Range(0.001, 1.0));
         scenarioCmd

@@ -86,7 +86,7 @@ def scenario(name: str, *, seed: int = 1, tightness: float = 0.0, slack: float |
     pacman (tightness), viking-helmet, random-polygons (seed), assembly-1 and assembly-2
     (slack), random (seed, robots, obstacles) and the generated families carry-turn (slack),
     niche-swap (slack), niche-three, discs-swap, discs-room (robots), open-clutter, bend, doors
-    and keyhole (slack) (seed). translate names robots that only translate (each must keep its angle from
+    keyhole (slack) and swallow (slack) (seed). translate names robots that only translate (each must keep its angle from
     start to goal). Raises InputError for an unknown name or a setting out of range."""
     r = _mms.ScenarioRequest()
     r.name = _text(name, "mms.scenario: name")

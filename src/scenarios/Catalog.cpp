@@ -16,7 +16,7 @@ const std::vector<std::string>& scenarioNames() {
   static const std::vector<std::string> names{
       "pacman",     "viking-helmet", "random-polygons", "assembly-1", "assembly-2", "random",
       "carry-turn", "niche-swap",    "niche-three",     "discs-swap", "discs-room", "open-clutter",
-      "bend",       "doors",         "keyhole"};
+      "bend",       "doors",         "keyhole",         "swallow"};
   return names;
 }
 
@@ -78,6 +78,7 @@ Scene generate(const ScenarioRequest& r) {
   if (n == "random") return randomScene({r.seed, r.robots, r.obstacles});
   if (n == "carry-turn") return carryTurnScene(r.seed, r.slackGiven ? r.slack : -1);
   if (n == "keyhole") return keyholeScene(r.seed, r.slackGiven ? r.slack : -1);
+  if (n == "swallow") return swallowScene(r.seed, r.slackGiven ? r.slack : -1);
   if (n == "niche-swap") return nicheSwapScene(r.seed, r.slackGiven ? r.slack : -1);
   if (n == "niche-three") return nicheThreeScene(r.seed);
   if (n == "discs-swap") return discsSwapScene(r.seed);

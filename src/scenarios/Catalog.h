@@ -13,7 +13,7 @@ struct ScenarioRequest {
   std::string name;
   double tightness = 0;  // pacman: 0 = the base scene, towards 1 = the square exactly fits
   uint64_t seed = 1;     // random-polygons, random and the generated families
-  double slack = 0.05;   // assembly-1/2; niche-swap, carry-turn and keyhole when slackGiven
+  double slack = 0.05;   // assembly-1/2; niche-swap, carry-turn, keyhole, swallow when given
   bool slackGiven = false;
   bool mPartsOnly = false;         // assembly-2
   int robots = 0, obstacles = -1;  // random: 0 / -1 = drawn from the seed; discs-room: robots

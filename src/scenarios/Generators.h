@@ -45,10 +45,27 @@ Scene carryTurnScene(uint64_t seed, double play = -1);
 /// below a thick wall, passes a keyhole slot barely wider than its bow into an octagonal
 /// chamber whose inscribed circle clears the key's smallest turning circle by `slack` (0.03-0.12
 /// from the seed unless given), turns a quarter there (the one place between the slots with room
-/// to turn) and leaves lying down through a slot in the side wall. Random per seed: the key's proportions, the
-/// slots' places along the chamber's sides, the walls' thickness, which way the key points, a
-/// quarter turn and a mirror image of the whole.
+/// to turn) and leaves lying down through a slot in the side wall. Random per seed: the key's
+/// proportions, the slots' places along the chamber's sides, the walls' thickness, which way the
+/// key points, a quarter turn and a mirror image of the whole.
 Scene keyholeScene(uint64_t seed, double slack = -1);
+
+/// Swallow and turn: a U-shaped robot (its reference point the middle of its back) goes from a
+/// corridor on the left to one on the right, both too narrow for it to turn in, mouth first at
+/// the start and mouth last at the goal. Between them, centred on the origin, a round bay (a
+/// regular 16-24-gon) whose inscribed circle clears the U's turning circle about its centre by
+/// `slack` (0.03-0.12 from the seed unless given); a part fixed at that centre (a bar, a T or an
+/// L inside a circle a little smaller than the U's mouth) bars the way. The U takes the part
+/// into its mouth, turns half round about it (its reference point on a circle) and leaves it
+/// behind. Random per seed: the part's shape, size and angle, the U's arms, back, reach and play
+/// round the part, the corridor's slack, the bay's sides, the sense of the turn and a quarter
+/// turn of the whole.
+Scene swallowScene(uint64_t seed, double slack = -1);
+
+/// The way through a swallow scene its generator built it for (uncertified: the path checker
+/// says whether it is free): the U goes straight to the part, turns half round about the part's
+/// centre in 180 steps, and goes straight to its goal.
+std::vector<Config> swallowWitness(const Scene& scene);
 
 /// Niche swap: two robots of random blocky shapes swap the ends of a corridor too narrow for
 /// them to pass each other; a niche in one wall, at a random place, fits either robot at angle 0
