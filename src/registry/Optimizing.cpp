@@ -16,6 +16,7 @@
 #include "path/Optimize.h"
 #include "registry/Adapters.h"
 #include "util/Deferred.h"
+#include "util/Number.h"
 
 namespace mms {
 
@@ -82,6 +83,7 @@ class Optimizing final : public Planner {
       r.stats.counts.emplace_back("restarts_improved", improved);
     }
     r.stats.counts.emplace_back("optimize_changes", total.accepted);
+    r.stats.counts.emplace_back("optimize_rounds", total.rounds);
     r.stats.counts.emplace_back("optimize_evaluations", total.evaluations);
     return r;
   }
@@ -120,6 +122,7 @@ class Optimizing final : public Planner {
     }
     stats.accepted += s.accepted;
     stats.evaluations += s.evaluations;
+    stats.rounds += s.rounds;
     stats.seconds += watch.seconds();
   }
 
@@ -170,14 +173,37 @@ PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
       "With --optimize: plan N more times from seeds drawn from --seed, optimise each path and "
       "keep the best by --objective (anytime improvement within the time limit; the optimiser "
       "alone keeps the first path's way round the obstacles) (default 0)"};
+  const OptimizeSettings defaults;
+  const ParamSpec rounds{"optimize-rounds",
+                         Type::Integer,
+                         1,
+                         1000,
+                         double(defaults.rounds),
+                         "With --optimize: at most this many rounds of " +
+                             std::to_string(defaults.attempts) + " shortcut attempts (default " +
+                             formatNumber(double(defaults.rounds)) + ")"};
+  const ParamSpec gain{"optimize-gain",
+                       Type::Real,
+                       0,
+                       1,
+                       defaults.minGain,
+                       "With --optimize: rounds end once one shortens the path by less than "
+                       "this share (0: every round runs) (default " +
+                           formatNumber(defaults.minGain) + ")"};
   info.params.push_back(optimize);
   info.params.push_back(objective);
   info.params.push_back(restarts);
-  info.make = [make = info.make, optimize, objective, restarts, specs = info.params](
+  info.params.push_back(rounds);
+  info.params.push_back(gain);
+  info.make = [make = info.make, optimize, objective, restarts, rounds, gain, specs = info.params](
                   const Scene& scene, const PlannerParams& params, const std::string& source) {
     OptimizeSettings s;
     s.objective =
         paramValue(params, objective) == 1 ? PathObjective::Clearance : PathObjective::Length;
+    // The certifier's budget grows with the rounds asked for, as each round may spend its share.
+    s.maxWork = s.maxWork * size_t(paramValue(params, rounds)) / s.rounds;
+    s.rounds = size_t(paramValue(params, rounds));
+    s.minGain = paramValue(params, gain);
     Factory factory = [make, params, source](const Scene& sc, uint64_t seed) {
       PlannerParams p = params;
       p.seed = seed;
@@ -187,7 +213,9 @@ PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
         std::move(factory), scene, params.seed, s,
         std::map<std::string, double>{{"optimize", paramValue(params, optimize)},
                                       {"objective", paramValue(params, objective)},
-                                      {"restarts", paramValue(params, restarts)}},
+                                      {"restarts", paramValue(params, restarts)},
+                                      {rounds.key(), paramValue(params, rounds)},
+                                      {gain.key(), paramValue(params, gain)}},
         specs);
   };
   return info;

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "check/PathChecker.h"
+#include "mms/Errors.h"
 #include "mms/Planner.h"
 #include "path/Optimize.h"
 
@@ -237,6 +239,26 @@ TEST(Optimize, EveryPlannerOptimisesWhenAskedAndNotWhenTold) {
     for (const auto& [n, secs] : a.stats.phases) phase |= n == "optimize";
     EXPECT_TRUE(phase) << name;
   }
+}
+
+// The rounds a user asks for are the most that run; a gain of 0 runs them until one changes
+// nothing, so at least as many as the default's.
+TEST(Optimize, RoundsAndGainAreTheUsersToSet) {
+  const Scene s = wallWithGap();
+  auto rounds = [&](std::map<std::string, double> values) {
+    PlannerParams p;
+    p.values = std::move(values);
+    const PlanResult r = makePlanner("rrtconnect", s, p)->solve(Termination(30));
+    EXPECT_TRUE(r.found() && certified(s, r.waypoints));
+    for (const auto& [name, n] : r.stats.counts)
+      if (name == "optimize_rounds") return n;
+    ADD_FAILURE() << "no optimize_rounds";
+    return size_t(0);
+  };
+  EXPECT_EQ(rounds({{"optimize", 1}, {"optimize-rounds", 1}}), 1u);
+  const size_t byDefault = rounds({{"optimize", 1}});
+  EXPECT_GE(rounds({{"optimize", 1}, {"optimize-gain", 0}}), byDefault);
+  EXPECT_THROW(makePlanner("mms", s, PlannerParams{1, {{"optimize-rounds", 0}}}), InputError);
 }
 
 TEST(Optimize, ObjectiveIsAChoiceByName) {
