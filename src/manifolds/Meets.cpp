@@ -3,6 +3,7 @@
 #include "manifolds/Compound.h"
 #include "manifolds/Manifold.h"
 #include "manifolds/OneRobot.h"
+#include "manifolds/Pivot.h"
 
 namespace mms {
 
@@ -17,6 +18,7 @@ std::vector<MeetEntry>& table() {
       {&CompoundSliceManifold::kFamily, &LineManifold::kFamily, meetCompoundOneRobot},
       {&CompoundLineManifold::kFamily, &SliceManifold::kFamily, meetCompoundOneRobot},
       {&CompoundLineManifold::kFamily, &LineManifold::kFamily, meetCompoundOneRobot},
+      {&PivotLineManifold::kFamily, &SliceManifold::kFamily, meetPivotSlice},
   };
   return rules;
 }

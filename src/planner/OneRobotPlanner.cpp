@@ -2,8 +2,10 @@
 
 #include <cmath>
 
+#include "geometry/PolygonOps.h"
 #include "manifolds/CellRoute.h"
 #include "manifolds/CellSampling.h"
+#include "manifolds/Pivot.h"
 #include "path/Motion.h"
 #include "planner/NoPath.h"
 #include "planner/Rounds.h"
@@ -78,6 +80,37 @@ Vec2 OneRobotPlanner::nextLinePoint() {
     }
   }
   return uniform();
+}
+
+void OneRobotPlanner::addPivotLines(const Pose& start, const Pose& goal) {
+  pivotsAdded_ = true;
+  const Robot& robot = contactScene_.robots[0];
+  if (!settings_.pivotLines || robot.motion == Motion::Translate) return;
+  const std::optional<Circle> pocket = pocketDisc(robot.shape);
+  if (!pocket) return;
+  const LineWorld world = pivotWorld(contactScene_, pocket->center);
+  std::vector<Vec2> parts;
+  for (const Ring& o : contactScene_.obstacles)
+    if (const Circle part = smallestCircle(o); part.radius <= pocket->radius)
+      parts.push_back(part.center);
+  if (parts.empty()) return;
+  // A turn about a part begins and ends where the robot comes and goes: the slices at the
+  // start's and the goal's angles reach it there, where a robot that cannot turn in its
+  // corridor meets no slice of the sequence for rounds.
+  addSlice(start.theta);
+  addSlice(goal.theta);
+  for (const Vec2 at : parts) {
+    std::unique_ptr<PivotLineManifold> line;
+    {
+      const TimeCharge charge(stats_.manifolds.lineSeconds);
+      line = std::make_unique<PivotLineManifold>(
+          world, [&](const Pose& q) { return subspace().free(q); }, pocket->center, at,
+          &stats_.manifolds.lineStats);
+    }
+    ++stats_.manifolds.lines;
+    stats_.manifolds.lineArcs += line->cellCount();
+    subspace().addWovenLine(std::move(line), uint32_t(stats_.pivotLines++));
+  }
 }
 
 void OneRobotPlanner::addSlice(double theta) {
@@ -194,6 +227,7 @@ OneRobotResult OneRobotPlanner::solveRounds(
       addNextSlice();
     else
       sub.addLine(nextLinePoint());
+    if (stats_.rounds >= 2 && !pivotsAdded_) addPivotLines(start, goal);
     report(false);
   };
   h.motion = [&](const std::vector<size_t>& nodes) {

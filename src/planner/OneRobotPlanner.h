@@ -36,6 +36,11 @@ struct OneRobotSettings {
   // clutter, bar-slot, bug trap and maze were unchanged within noise.
   double cornerLineShare = 0.5;
   PointLocation pointLocation = PointLocation::Auto;
+  /// From the second round on, pivot lines (manifolds/Pivot.h): the robot turning about the
+  /// centre of its pocket placed at the centre of each obstacle that fits there (a part it
+  /// can swallow and turn about). Not in the first round, which solves every tight family but
+  /// the swallow (docs/benchmarks.md) and so pays nothing.
+  bool pivotLines = true;
   /// Threads that build slices (each round's slices in batches of this many). The result does
   /// not depend on it: slices are added to the roadmap in angle order.
   unsigned threads = 1;
@@ -62,6 +67,7 @@ class AngleSequence {
 
 struct OneRobotStats {
   SubspaceStats manifolds;  // slices, lines, their cells and build times
+  size_t pivotLines = 0;    // of the lines: those turning about a pivot
   size_t rounds = 0, graphNodes = 0, graphEdges = 0;
   size_t pathCells = 0;      // FSCs on the graph path
   size_t pathManifolds = 0;  // the slices and lines they lie on (of slices + lines built)
@@ -99,6 +105,9 @@ class OneRobotPlanner {
   OneRobotResult solveRounds(const Pose& start, const Pose& goal, const Termination& stop,
                              const std::function<void(const OneRobotStats&)>& progress);
   Vec2 nextLinePoint();
+  /// Pivot lines about the obstacles that fit the robot's pocket, once, with slices at the
+  /// start's and the goal's angles if there are any.
+  void addPivotLines(const Pose& start, const Pose& goal);
   void addSlice(double theta);
   void addNextSlice();
   PlanStatus solveTranslation(const Pose& start, const Pose& goal, OneRobotResult& result);
@@ -113,6 +122,7 @@ class OneRobotPlanner {
   SliceWorld sliceWorld_;
   Random rng_;
   AngleSequence angles_;
+  bool pivotsAdded_ = false;
   Roadmap roadmap_;
   std::vector<std::unique_ptr<Subspace>> subspaces_;  // exactly one: no robot is held
   // Slices of the next angles, built settings_.threads at a time ahead of their turn; they

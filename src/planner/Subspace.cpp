@@ -158,6 +158,13 @@ size_t Subspace::addLine(Vec2 p) {
   return lines_.size() - 1;
 }
 
+uint32_t Subspace::addWovenLine(std::unique_ptr<Manifold> line, uint32_t index) {
+  const uint32_t id = roadmap_.add(std::move(line), frame_.id, index);
+  const TimeCharge connect(stats_.connectSeconds);
+  roadmap_.weave(weave_, 0, id);
+  return id;
+}
+
 long Subspace::sliceNodeAt(size_t k, Vec2 p, bool knownFree) const {
   if (k >= slices_.size()) return -1;  // a subspace cut short by the time limit
   if (knownFree && slices_[k].fscCount() == 1) return long(roadmap_.node(sliceIds_[k], 0));

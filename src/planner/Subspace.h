@@ -148,6 +148,9 @@ class Subspace {
   size_t addLine(Vec2 p);
   /// The roadmap id of line l.
   uint32_t lineId(size_t l) const { return lineIds_[l]; }
+  /// Adds a manifold of another family that meets this subspace's slices as its lines do (a
+  /// pivot line), woven with them; `index` is the planner's number for it. Returns its id.
+  uint32_t addWovenLine(std::unique_ptr<Manifold> line, uint32_t index);
 
   /// Graph node of the cell of slice k containing p, or -1 (also when slice k was never built).
   /// `knownFree`: the collision checker found p free here, so a slice of one cell needs no

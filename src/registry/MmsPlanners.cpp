@@ -57,7 +57,9 @@ void insertAfter(std::vector<std::pair<std::string, double>>& phases, const std:
 
 PlanStatistics statisticsOf(const OneRobotStats& s) {
   const SubspaceStats& m = s.manifolds;
-  return commonStatistics(s, m, {{"slices", m.sliceSeconds}, {"lines", m.lineSeconds}});
+  PlanStatistics p = commonStatistics(s, m, {{"slices", m.sliceSeconds}, {"lines", m.lineSeconds}});
+  if (s.pivotLines > 0) p.counts.emplace_back("pivot_lines", s.pivotLines);
+  return p;
 }
 
 PlanStatistics statisticsOf(const TwoRobotStats& s) {

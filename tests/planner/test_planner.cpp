@@ -7,6 +7,7 @@
 
 #include "Support.h"
 #include "io/SceneIO.h"
+#include "manifolds/Pivot.h"
 #include "planner/OneRobotPlanner.h"
 #include "scenarios/Generators.h"
 
@@ -227,4 +228,33 @@ TEST(Plan, LinesNearCellVerticesTurnTheBendWithFewerManifolds) {
   std::printf("manifolds built: %zu with lines near cell vertices, %zu without\n", built[1],
               built[0]);
   EXPECT_LT(2 * built[1], built[0]);
+}
+
+// A U that swallows a part and turns half round about it: with pivot lines (the U's pocket
+// about the part) MMS connects in its second round, on a path through one of them; without,
+// it needs the angles of four rounds to stair-step the turn.
+TEST(Plan, PivotLinesTurnTheSwallowInTheSecondRound) {
+  size_t with = 0, without = 0;
+  for (uint64_t k = 1; k <= 4; ++k) {
+    const Scene s = swallowScene(k);
+    const CollisionChecker checker(s);
+    for (const bool pivots : {true, false}) {
+      OneRobotSettings st;
+      st.pivotLines = pivots;
+      OneRobotPlanner planner(s, 0, st);
+      const OneRobotResult r =
+          planner.solve(s.robots[0].start, s.robots[0].goal, Termination(planSeconds(60)));
+      ASSERT_EQ(r.status, PlanStatus::Found) << s.name;
+      EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << s.name;
+      (pivots ? with : without) += r.stats.rounds;
+      if (!pivots) continue;
+      EXPECT_GE(r.stats.pivotLines, 1u);
+      bool used = false;
+      for (const ConnectivityGraph::Node& n : r.cells)
+        used |= &planner.roadmap().manifold(n.manifold).family() == &PivotLineManifold::kFamily;
+      EXPECT_TRUE(used) << s.name;
+    }
+  }
+  EXPECT_LE(with, 4 * 2u + 1);
+  EXPECT_GT(without, with);
 }
