@@ -116,9 +116,9 @@ class Optimizer {
       for (size_t q = p; q < runs.size(); ++q) {
         const size_t from = runs[p].first, to = runs[q].second;
         const double net = w[to][c] - w[from][c], turns = -std::round(net / (2 * M_PI));
-        if (turns == 0) continue;
         const double saving = turned[to] - turned[from] - std::fabs(net + 2 * M_PI * turns);
-        out.push_back({p, q, turns, saving});
+        // Without a full turn to take back, only turning back and forth is saved.
+        if (turns != 0 || saving >= kMinSaving) out.push_back({p, q, turns, saving});
       }
     std::stable_sort(out.begin(), out.end(), [](const Rewind& a, const Rewind& b) {
       return a.saving > b.saving + 1e-9 || (a.saving > b.saving - 1e-9 && a.q - a.p < b.q - b.p);
@@ -130,10 +130,12 @@ class Optimizer {
   // window's cost; or the full turns added in one run (that run turns the other way round), or
   // half in each of two (between them the robot is held half a turn round: a key that turned a
   // quarter the long way in its chamber, left through a slot with its bit first and turned half
-  // round outside, turns a quarter the other way and leaves bit last).
+  // round outside, turns a quarter the other way and leaves bit last); or the whole net turn
+  // made in one run, the robot holding its angle through the others (what removes turning back
+  // and forth across runs, which a window without a full turn to take back is tried for).
   struct Carrier {
-    enum Kind { Scaled, Spread, Runs } kind;
-    size_t first = 0, second = 0;  // runs, for Runs (second == first: one run)
+    enum Kind { Scaled, Spread, Runs, Only } kind;
+    size_t first = 0, second = 0;  // runs, for Runs (second == first: one run) and Only
   };
 
   // The first candidate that certifies, taken; whether there was one.
@@ -144,9 +146,13 @@ class Optimizer {
     size_t tries = 0;
     for (const Rewind& r : rewinds(w, runs, c)) {
       const size_t from = runs[r.p].first, to = runs[r.q].second;
-      std::vector<Carrier> carriers{{Carrier::Scaled}};
-      for (size_t p = r.p; p <= r.q && r.q > r.p; ++p)
-        for (size_t q = p; q <= r.q; ++q) carriers.push_back({Carrier::Runs, p, q});
+      std::vector<Carrier> carriers;
+      if (r.turns != 0) {
+        carriers.push_back({Carrier::Scaled});
+        for (size_t p = r.p; p <= r.q && r.q > r.p; ++p)
+          for (size_t q = p; q <= r.q; ++q) carriers.push_back({Carrier::Runs, p, q});
+      }
+      for (size_t p = r.p; p <= r.q; ++p) carriers.push_back({Carrier::Only, p, p});
       carriers.push_back({Carrier::Spread});
       for (const Carrier& carrier : carriers) {
         if (tries++ == kRewindTries || done()) return false;
@@ -185,6 +191,13 @@ class Optimizer {
       return own != 0 ? (w[at][c] - w[first][c]) / own
                       : (cum[at] - cum[first]) / (cum[last] - cum[first]);
     };
+    if (carrier.kind == Carrier::Only) {  // monotone: by cost through the run
+      const auto [first, last] = runs[carrier.first];
+      const double t = at <= first  ? 0.0
+                       : at >= last ? 1.0
+                                    : (cum[at] - cum[first]) / (cum[last] - cum[first]);
+      return a + target * t;
+    }
     const double added = carrier.first == carrier.second
                              ? through(carrier.first)
                              : 0.5 * (through(carrier.first) + through(carrier.second));
@@ -338,7 +351,9 @@ class Optimizer {
   const OptimizeSettings& settings_;
   const Termination& stop_;
   OptimizeStats& s_;
-  static constexpr size_t kRewindTries = 32;  // certifications per robot and change
+  static constexpr size_t kRewindTries = 32;
+  static constexpr double kMinSaving =
+      0.05;  // radians of back and forth worth a try  // certifications per robot and change
   PathCheckSettings quick_;
   size_t limit_ = 0;  // work at which the current step ends
   size_t workPerEvaluation_ =

@@ -117,6 +117,20 @@ TEST(Optimize, TurnsSplitAcrossWaypointsAndMovesAreTurnedTheShortWayAsOne) {
   EXPECT_NEAR(translationOf(w, 0), 16, 1e-9);
 }
 
+// Turning back and forth across moves at a fixed angle, with no full turn to take back: the
+// net turn made once, the robot holding its angle through the rest.
+TEST(Optimize, TurningBackAndForthAcrossMovesIsMadeOnce) {
+  Scene s = room(1);
+  s.robots[0].goal = {18, 2, 2.0};
+  std::vector<Config> w{{2, 2, 0},    {2, 2, 1},    {8, 2, 1},   {8, 2, 0.5},
+                        {14, 2, 0.5}, {14, 2, 2.0}, {18, 2, 2.0}};
+  ASSERT_TRUE(certified(s, w));
+  EXPECT_NEAR(rotationOf(w, 0), 3.0, 1e-12);
+  EXPECT_NEAR(turnedShortWay(s, w), 2.0, 1e-9);
+  EXPECT_TRUE(certified(s, w));
+  EXPECT_NEAR(translationOf(w, 0), 16, 1e-9);
+}
+
 // A bar passes a slot lying down. It turned a quarter one way before the slot and half round
 // after it; turned a quarter the other way it passes the slot the other way round, and needs no
 // half turn: the two turns change by half a turn each, the slot's angle by half a turn.
