@@ -81,15 +81,16 @@ double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
   return norm(p - closestPointOnSegment(p, a, b));
 }
 
+double distanceToEdges(const Ring& ring, Vec2 p) {
+  double d = std::numeric_limits<double>::infinity();
+  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+    d = std::min(d, pointSegmentDistance(p, ring[j], ring[i]));
+  return d;
+}
+
 Disc inscribedDisc(const Ring& ring) {
   // The distance to the boundary inside the ring, -1 outside.
-  auto depth = [&](Vec2 p) {
-    if (!insideRing(ring, p)) return -1.0;
-    double d = std::numeric_limits<double>::infinity();
-    for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
-      d = std::min(d, pointSegmentDistance(p, ring[j], ring[i]));
-    return d;
-  };
+  auto depth = [&](Vec2 p) { return insideRing(ring, p) ? distanceToEdges(ring, p) : -1.0; };
   const Box b = boundingBox(ring);
   constexpr int kGrid = 32;
   Disc best;

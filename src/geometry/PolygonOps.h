@@ -19,14 +19,17 @@ double radius(const Ring& ring);
 /// Point in polygon by crossing number; points on the boundary may go either way.
 bool insideRing(const Ring& ring, Vec2 p);
 
-/// A disc inside a simple polygon: its centre lies inside the ring and `radius` is the centre's
-/// distance to the ring's edges (so the disc lies inside). The centre is the best of a grid
-/// over the ring's box, refined by a pattern search: near the largest inscribed disc, not
-/// always it. Radius 0 when no grid point lies inside (a sliver thinner than the grid).
+/// The distance from p to the nearest edge of `ring`.
+double distanceToEdges(const Ring& ring, Vec2 p);
+
 struct Disc {
   Vec2 center;
   double radius = 0;
 };
+/// A disc inside a simple polygon: its centre lies inside the ring and `radius` is the centre's
+/// distance to the ring's edges (so the disc lies inside). The centre is the best of a grid
+/// over the ring's box, refined by a pattern search: near the largest inscribed disc, not
+/// always it. Radius 0 when no grid point lies inside (a sliver thinner than the grid).
 Disc inscribedDisc(const Ring& ring);
 
 /// Closed segments [a,b] and [c,d] share a point (floating-point orientation tests).

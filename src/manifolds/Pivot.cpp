@@ -15,16 +15,7 @@ namespace mms {
 
 const ManifoldFamily PivotLineManifold::kFamily{"pivot-line"};
 
-namespace {
-
-Vec2 rotated(Vec2 v, double theta) {
-  const double c = std::cos(theta), s = std::sin(theta);
-  return {c * v.x - s * v.y, s * v.x + c * v.y};
-}
-
-}  // namespace
-
-Circle smallestCircle(const Ring& ring) {
+Disc smallestCircle(const Ring& ring) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Traits = CGAL::Min_circle_2_traits_2<K>;
   std::vector<K::Point_2> points;
@@ -46,20 +37,16 @@ Circle smallestCircle(const Ring& ring) {
 
 // On a grid fine against the shape (a pocket's play is a few hundredths of its size); among
 // discs within a grid step of the largest, the one nearest the reference point.
-std::optional<Circle> pocketDisc(const Ring& shape) {
+std::optional<Disc> pocketDisc(const Ring& shape) {
   const Ring hull = exact::convexHull(std::vector<Vec2>(shape.begin(), shape.end()));
   const Box b = boundingBox(hull);
   constexpr int kGrid = 160;
   const double step = std::max(b.width(), b.height()) / kGrid;
   auto depth = [&](Vec2 p) {
     if (!insideRing(hull, p) || insideRing(shape, p)) return 0.0;
-    double d = std::numeric_limits<double>::infinity();
-    for (const Ring* r : {&shape, &hull})
-      for (size_t i = 0, j = r->size() - 1; i < r->size(); j = i++)
-        d = std::min(d, pointSegmentDistance(p, (*r)[j], (*r)[i]));
-    return d;
+    return std::min(distanceToEdges(shape, p), distanceToEdges(hull, p));
   };
-  std::vector<Circle> discs;
+  std::vector<Disc> discs;
   double deepest = 0;
   for (int i = 0; i <= kGrid; ++i)
     for (int j = 0; j <= kGrid; ++j) {
@@ -70,8 +57,8 @@ std::optional<Circle> pocketDisc(const Ring& shape) {
       }
     }
   if (deepest < 2 * step) return std::nullopt;
-  std::optional<Circle> best;
-  for (const Circle& c : discs)
+  std::optional<Disc> best;
+  for (const Disc& c : discs)
     if (c.radius >= deepest - step && (!best || norm(c.center) < norm(best->center))) best = c;
   return best;
 }
@@ -88,13 +75,13 @@ PivotLineManifold::PivotLineManifold(const LineWorld& world, const PoseTest& rob
       line_(
           world,
           [&](const Pose& p) {
-            const Vec2 ref = Vec2{p.x, p.y} - rotated(pivot, p.theta);
+            const Vec2 ref = Vec2{p.x, p.y} - Transform({0, 0, p.theta})(pivot);
             return robotFree({ref.x, ref.y, p.theta});
           },
           at, stats) {}
 
 Config PivotLineManifold::at(double theta) const {
-  const Vec2 ref = line_.point() - rotated(pivot_, theta);
+  const Vec2 ref = line_.point() - Transform({0, 0, theta})(pivot_);
   return {ref.x, ref.y, theta};
 }
 

@@ -12,24 +12,19 @@
 #include <optional>
 #include <vector>
 
+#include "geometry/PolygonOps.h"
 #include "manifolds/Line.h"
 #include "manifolds/Manifold.h"
 
 namespace mms {
 
-/// A circle: centre and radius.
-struct Circle {
-  Vec2 center;
-  double radius = 0;
-};
-
-/// The smallest circle enclosing a ring's vertices (CGAL's Min_circle_2).
-Circle smallestCircle(const Ring& ring);
+/// The smallest disc enclosing a ring's vertices (CGAL's Min_circle_2).
+Disc smallestCircle(const Ring& ring);
 
 /// Where a robot can hold a part in a pocket: the largest disc inside its convex hull but outside
 /// it, the one nearest its reference point among equals (on a grid a 160th of the robot's
 /// size). None when the robot is convex or its pocket is thinner than two grid steps.
-std::optional<Circle> pocketDisc(const Ring& shape);
+std::optional<Disc> pocketDisc(const Ring& shape);
 
 class PivotLineManifold final : public Manifold {
  public:

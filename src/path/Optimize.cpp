@@ -182,25 +182,21 @@ class Optimizer {
     if (carrier.kind == Carrier::Scaled) return a + target * (w[at][c] - a) / net;
     if (carrier.kind == Carrier::Spread)
       return a + target * (cum[at] - cum[from]) / (cum[to] - cum[from]);
-    // How far through a run the robot is at `at`: by its turn, or by cost if it turns back.
-    auto through = [&](size_t run) {
+    // How far through a run the robot is at `at`: by its cost, or by its turn.
+    auto through = [&](size_t run, bool byTurn) {
       const auto [first, last] = runs[run];
       if (at <= first) return 0.0;
       if (at >= last) return 1.0;
       const double own = w[last][c] - w[first][c];
-      return own != 0 ? (w[at][c] - w[first][c]) / own
-                      : (cum[at] - cum[first]) / (cum[last] - cum[first]);
+      return byTurn && own != 0 ? (w[at][c] - w[first][c]) / own
+                                : (cum[at] - cum[first]) / (cum[last] - cum[first]);
     };
-    if (carrier.kind == Carrier::Only) {  // monotone: by cost through the run
-      const auto [first, last] = runs[carrier.first];
-      const double t = at <= first  ? 0.0
-                       : at >= last ? 1.0
-                                    : (cum[at] - cum[first]) / (cum[last] - cum[first]);
-      return a + target * t;
-    }
+    // The whole net turn in one run: by cost, which never turns back.
+    if (carrier.kind == Carrier::Only) return a + target * through(carrier.first, false);
+    // Full turns added where the robot turned (by cost where a run turns back to its start).
     const double added = carrier.first == carrier.second
-                             ? through(carrier.first)
-                             : 0.5 * (through(carrier.first) + through(carrier.second));
+                             ? through(carrier.first, true)
+                             : 0.5 * (through(carrier.first, true) + through(carrier.second, true));
     return w[at][c] + 2 * M_PI * r.turns * added;
   }
 
@@ -351,9 +347,8 @@ class Optimizer {
   const OptimizeSettings& settings_;
   const Termination& stop_;
   OptimizeStats& s_;
-  static constexpr size_t kRewindTries = 32;
-  static constexpr double kMinSaving =
-      0.05;  // radians of back and forth worth a try  // certifications per robot and change
+  static constexpr size_t kRewindTries = 32;  // certifications per robot and change
+  static constexpr double kMinSaving = 0.05;  // radians of back and forth worth a try
   PathCheckSettings quick_;
   size_t limit_ = 0;  // work at which the current step ends
   size_t workPerEvaluation_ =

@@ -84,14 +84,13 @@ Vec2 OneRobotPlanner::nextLinePoint() {
 
 void OneRobotPlanner::addPivotLines(const Pose& start, const Pose& goal) {
   pivotsAdded_ = true;
-  const Robot& robot = contactScene_.robots[0];
-  if (!settings_.pivotLines || robot.motion == Motion::Translate) return;
-  const std::optional<Circle> pocket = pocketDisc(robot.shape);
+  if (!settings_.pivotLines) return;
+  const std::optional<Disc> pocket = pocketDisc(contactScene_.robots[0].shape);
   if (!pocket) return;
   const LineWorld world = pivotWorld(contactScene_, pocket->center);
   std::vector<Vec2> parts;
   for (const Ring& o : contactScene_.obstacles)
-    if (const Circle part = smallestCircle(o); part.radius <= pocket->radius)
+    if (const Disc part = smallestCircle(o); part.radius <= pocket->radius)
       parts.push_back(part.center);
   if (parts.empty()) return;
   // A turn about a part begins and ends where the robot comes and goes: the slices at the

@@ -35,26 +35,20 @@ Ring upperWall(double half, double bay, unsigned n, double end, double top) {
     const double a = 2 * M_PI * (double(i) + 0.5) / n;  // no vertex on the corridor's axis
     return Vec2{circum * std::cos(a), circum * std::sin(a)};
   };
-  // Where the corridor's wall meets the bay: the edges crossing y = half on either side.
-  std::vector<Vec2> arc;
+  // The bay's vertices above the corridor's wall, left to right, and where its edges cross
+  // that wall (two: the n-gon is convex).
+  std::vector<Vec2> arc, crossings;
   for (unsigned i = 0; i < n; ++i) {
-    const Vec2 v = vertex(i);
-    if (v.y > half) arc.push_back(v);
+    const Vec2 a = vertex(i), b = vertex((i + 1) % n);
+    if (a.y > half) arc.push_back(a);
+    if ((a.y > half) != (b.y > half))
+      crossings.push_back({a.x + (half - a.y) / (b.y - a.y) * (b.x - a.x), half});
   }
   std::sort(arc.begin(), arc.end(), [](Vec2 a, Vec2 b) { return a.x < b.x; });
-  auto meet = [&](Vec2 inside) {  // on the edge from `inside` to its neighbour below the line
-    for (unsigned i = 0; i < n; ++i) {
-      const Vec2 a = vertex(i), b = vertex((i + 1) % n);
-      if ((a.y > half) == (b.y > half)) continue;
-      if (!(a.x == inside.x && a.y == inside.y) && !(b.x == inside.x && b.y == inside.y)) continue;
-      const double t = (half - a.y) / (b.y - a.y);
-      return Vec2{a.x + t * (b.x - a.x), half};
-    }
-    return Vec2{inside.x, half};
-  };
-  Ring wall{{-end, half}, meet(arc.front())};
+  std::sort(crossings.begin(), crossings.end(), [](Vec2 a, Vec2 b) { return a.x < b.x; });
+  Ring wall{{-end, half}, crossings.front()};
   wall.insert(wall.end(), arc.begin(), arc.end());
-  wall.push_back(meet(arc.back()));
+  wall.push_back(crossings.back());
   wall.push_back({end, half});
   wall.push_back({end, top});
   wall.push_back({-end, top});

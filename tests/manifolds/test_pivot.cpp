@@ -43,7 +43,7 @@ TEST(Pivot, APocketsDiscIsTheDeepestNearestTheReferencePoint) {
   EXPECT_NEAR(pocket->center.y, 0, 0.03);
   // A convex robot has none; the smallest circle of a square is about its centre.
   EXPECT_FALSE(pocketDisc({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}));
-  const Circle c = smallestCircle({{0, 0}, {2, 0}, {2, 2}, {0, 2}});
+  const Disc c = smallestCircle({{0, 0}, {2, 0}, {2, 2}, {0, 2}});
   EXPECT_NEAR(c.center.x, 1, 1e-12);
   EXPECT_NEAR(c.center.y, 1, 1e-12);
   EXPECT_NEAR(c.radius, std::sqrt(2.0), 1e-12);
@@ -60,7 +60,7 @@ TEST(Pivot, TheSwallowsUTurnsHalfRoundAboutThePartInItsMouth) {
     const Robot& u = s.robots[0];
     const auto pocket = pocketDisc(u.shape);
     ASSERT_TRUE(pocket);
-    const Circle part = smallestCircle(s.obstacles.back());
+    const Disc part = smallestCircle(s.obstacles.back());
     EXPECT_LE(part.radius, pocket->radius);
     const CollisionChecker checker(s);
     const PoseTest free = [&](const Pose& p) { return checker.robotFree(0, p); };
