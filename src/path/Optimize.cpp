@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "check/PathChecker.h"
+#include "manifolds/Pivot.h"
+#include "path/SpinPlace.h"
 
 namespace mms {
 
@@ -71,8 +73,15 @@ class Optimizer {
     return r;
   }
 
+  // Most candidates cut through an obstacle, and the certifier, which advances from the start,
+  // takes some fifty evaluations to reach it: a pose in the middle of each segment, tested
+  // first, refuses them at one (the certifier would refuse them too, at that pose).
   bool certified(const std::vector<Config>& stretch) {
     ++s_.checked;
+    for (size_t k = 1; k < stretch.size(); ++k) {
+      s_.evaluations += 1;
+      if (!checker_.isFree(lerp(stretch[k - 1], stretch[k], 0.5))) return false;
+    }
     return check(stretch).ok;
   }
 
@@ -138,24 +147,28 @@ class Optimizer {
     size_t first = 0, second = 0;  // runs, for Runs (second == first: one run) and Only
   };
 
-  // The first candidate that certifies, taken; whether there was one.
+  // The first candidate that certifies, taken; whether there was one. Where the runs' turns
+  // do not certify where they were made, a second pass moves a run whose turn changed to the
+  // nearest place where the robot spins in place (SpinPlace.h).
   bool rewindOnce(std::vector<Config>& w, size_t robot) {
     const size_t c = 3 * robot + 2;
     const std::vector<Run> runs = turningRuns(w, c);
     const std::vector<double> cum = cumulativeCost(w);
+    const std::vector<Rewind> candidates = rewinds(w, runs, c);
+    return rewindPass(w, robot, runs, cum, candidates, false) ||
+           rewindPass(w, robot, runs, cum, candidates, true);
+  }
+
+  bool rewindPass(std::vector<Config>& w, size_t robot, const std::vector<Run>& runs,
+                  const std::vector<double>& cum, const std::vector<Rewind>& candidates,
+                  bool spin) {
+    const size_t c = 3 * robot + 2;
     size_t tries = 0;
-    for (const Rewind& r : rewinds(w, runs, c)) {
+    for (const Rewind& r : candidates) {
+      if (spin && r.turns == 0) continue;
       const size_t from = runs[r.p].first, to = runs[r.q].second;
-      std::vector<Carrier> carriers;
-      if (r.turns != 0) {
-        carriers.push_back({Carrier::Scaled});
-        for (size_t p = r.p; p <= r.q && r.q > r.p; ++p)
-          for (size_t q = p; q <= r.q; ++q) carriers.push_back({Carrier::Runs, p, q});
-      }
-      for (size_t p = r.p; p <= r.q; ++p) carriers.push_back({Carrier::Only, p, p});
-      carriers.push_back({Carrier::Spread});
-      for (const Carrier& carrier : carriers) {
-        if (tries++ == kRewindTries || done()) return false;
+      for (const Carrier& carrier : carriersOf(r, spin)) {
+        if (!spin && (tries++ == kRewindTries || done())) return false;
         std::vector<Config> stretch(w.begin() + long(from), w.begin() + long(to) + 1);
         double before = 0, after = 0;
         for (size_t k = 1; k < stretch.size(); ++k) {
@@ -164,13 +177,107 @@ class Optimizer {
           after += std::fabs(stretch[k][c] - stretch[k - 1][c]);
         }
         if (after > before - 1e-6) continue;  // this carrier turns as much or more
-        if (!certified(stretch)) continue;
-        std::copy(stretch.begin(), stretch.end(), w.begin() + long(from));
-        for (size_t k = to + 1; k < w.size(); ++k) w[k][c] += 2 * M_PI * r.turns;
-        return true;
+        for (const auto& [moved, mirror] : spunRuns(carrier, spin)) {
+          if (spin && (tries++ == kSpinTries || done())) return false;
+          std::vector<Config> candidate =
+              spin ? spunStretch(w, stretch, runs, moved, mirror, from, robot) : stretch;
+          if (spin && pathCost(checker_, candidate) >= cum[to] - cum[from]) continue;
+          if (!certified(candidate)) continue;
+          for (size_t k = to + 1; k < w.size(); ++k) w[k][c] += 2 * M_PI * r.turns;
+          w.erase(w.begin() + long(from), w.begin() + long(to) + 1);
+          w.insert(w.begin() + long(from), candidate.begin(), candidate.end());
+          return true;
+        }
       }
     }
     return false;
+  }
+
+  // The carriers of a window: in the second pass only those whose runs turn the other way.
+  static std::vector<Carrier> carriersOf(const Rewind& r, bool spin) {
+    std::vector<Carrier> carriers;
+    if (r.turns != 0) {
+      if (!spin) carriers.push_back({Carrier::Scaled});
+      for (size_t p = r.p; p <= r.q && r.q > r.p; ++p)
+        for (size_t q = p; q <= r.q; ++q) carriers.push_back({Carrier::Runs, p, q});
+    }
+    for (size_t p = r.p; p <= r.q; ++p) carriers.push_back({Carrier::Only, p, p});
+    if (!spin) carriers.push_back({Carrier::Spread});
+    return carriers;
+  }
+
+  // Which of a carrier's runs are moved to where the robot spins: none in the first pass; in
+  // the second, both of two (the later first, so that the earlier's waypoints keep their
+  // places), or either; each with the drift in angle outside the turn kept or mirrored.
+  static std::vector<std::pair<std::vector<size_t>, bool>> spunRuns(const Carrier& carrier,
+                                                                    bool spin) {
+    if (!spin) return {{{}, false}};
+    std::vector<std::vector<size_t>> moved{{carrier.first}};
+    if (carrier.kind == Carrier::Runs && carrier.second != carrier.first)
+      moved = {{carrier.second, carrier.first}, {carrier.first}, {carrier.second}};
+    std::vector<std::pair<std::vector<size_t>, bool>> out;
+    for (const bool mirror : {false, true})
+      for (const auto& m : moved) out.emplace_back(m, mirror);
+    return out;
+  }
+
+  // The rewound stretch with each of `moved` (runs) turned about the robot's spinning centre
+  // held at the clearest place near where the run turned most. Only the run's waypoints whose
+  // centre lies in that place's empty circle make the turn; the others drift in angle as they
+  // did, or the other way (`mirror`): a key turned half round in a slot fits it tilted the
+  // other way, as its mirror image.
+  std::vector<Config> spunStretch(const std::vector<Config>& w, std::vector<Config> stretch,
+                                  const std::vector<Run>& runs, const std::vector<size_t>& moved,
+                                  bool mirror, size_t from, size_t robot) {
+    const size_t c = 3 * robot + 2;
+    const Vec2 centre = spinCentre(robot);
+    auto centreAt = [&](const Config& q) {
+      const Vec2 offset = Transform(Pose{0, 0, q[c]})(centre);
+      return Vec2{q[c - 2] + offset.x, q[c - 1] + offset.y};
+    };
+    size_t end = from + stretch.size() - 1;  // an earlier run's turn ends before a later's
+    for (const size_t run : moved) {
+      const auto [first, last] = runs[run];
+      size_t most = first;
+      for (size_t k = first; k < last; ++k)
+        if (std::fabs(w[k + 1][c] - w[k][c]) > std::fabs(w[most + 1][c] - w[most][c])) most = k;
+      const Vec2 at = clearestNear(scene_, centreAt(lerp(w[most], w[most + 1], 0.5)),
+                                   0.25 * checker_.radius(robot));
+      const double room = wallDistance(scene_, at);
+      auto inside = [&](size_t k) {
+        const Vec2 p = centreAt(w[k]);
+        return std::hypot(p.x - at.x, p.y - at.y) <= room;
+      };
+      // From the last waypoint before the robot's centre enters that place to the first after
+      // it leaves (within the stretch).
+      size_t i = most, j = std::min(most + 1, end);
+      while (i > from && inside(i - 1)) --i;
+      while (j < end && inside(j + 1)) ++j;
+      if (i > from) --i;
+      if (j < end) ++j;
+      if (j <= i) continue;
+      // The rest of the run turns as it did, offset to the run's new ends.
+      const double begin = stretch[first - from][c];
+      const double finish = last <= end ? stretch[last - from][c] : stretch[end - from][c];
+      const double sign = mirror ? -1 : 1;
+      for (size_t k = first; k <= i; ++k)
+        stretch[k - from][c] = begin + sign * (w[k][c] - w[first][c]);
+      for (size_t k = j; k <= std::min(last, end); ++k)
+        stretch[k - from][c] = finish - sign * (w[std::min(last, end)][c] - w[k][c]);
+      const std::vector<Config> turn =
+          turnAbout(stretch[i - from], stretch[j - from], robot, centre, at, kSpinStep);
+      stretch.erase(stretch.begin() + long(i - from) + 1, stretch.begin() + long(j - from));
+      stretch.insert(stretch.begin() + long(i - from) + 1, turn.begin(), turn.end());
+      end = i;
+    }
+    return stretch;
+  }
+
+  // The centre of the robot's smallest enclosing circle (its frame), about which it sweeps least.
+  Vec2 spinCentre(size_t robot) {
+    if (spinCentres_.empty())
+      for (const Robot& r : scene_.robots) spinCentres_.push_back(smallestCircle(r.shape).center);
+    return spinCentres_[robot];
   }
 
   // The robot's new angle at waypoint `at` (c: its angle coordinate).
@@ -348,6 +455,9 @@ class Optimizer {
   const Termination& stop_;
   OptimizeStats& s_;
   static constexpr size_t kRewindTries = 32;  // certifications per robot and change
+  static constexpr size_t kSpinTries = 24;    // the same, for turns moved to spin in place
+  static constexpr double kSpinStep = 0.05;   // radians between a moved turn's waypoints
+  std::vector<Vec2> spinCentres_;
   static constexpr double kMinSaving = 0.05;  // radians of back and forth worth a try
   PathCheckSettings quick_;
   size_t limit_ = 0;  // work at which the current step ends

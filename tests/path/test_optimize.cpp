@@ -150,6 +150,31 @@ TEST(Optimize, AHalfTurnHeldThroughASlotIsTurnedAway) {
   EXPECT_TRUE(certified(s, w));
 }
 
+// A bar held at one end turned three quarters round about that end, where a post blocks the
+// quarter turn the other way. Turned about its middle held in the open, it needs the quarter
+// turn only: the turn is moved there (along its heading, across, round, and back).
+TEST(Optimize, ATurnBlockedWhereItWasMadeIsMadeTheShortWayWhereTheRobotSpins) {
+  Scene s;
+  s.name = "post";
+  s.bounds = {-3.5, -3.5, 3.5, 3.5};
+  s.obstacles = {{{0.0, -1.2}, {0.2, -1.2}, {0.2, -1.0}, {0.0, -1.0}}};
+  Robot bar;
+  bar.name = "bar";
+  bar.shape = {{0, -0.05}, {2, -0.05}, {2, 0.05}, {0, 0.05}};
+  bar.start = {-1, 0, 0};
+  bar.goal = {-1, 0, 1.5 * M_PI};
+  s.robots = {bar};
+  std::vector<Config> w{{-1, 0, 0}, {-1, 0, 1.5 * M_PI}};
+  ASSERT_TRUE(certified(s, w));
+  ASSERT_FALSE(certified(s, {{-1, 0, 0}, {-1, 0, -0.5 * M_PI}}));  // the short way, there
+  EXPECT_NEAR(turnedShortWay(s, w), 0.5 * M_PI, 1e-9);
+  EXPECT_TRUE(certified(s, w));
+  EXPECT_NEAR(w.back()[2], -0.5 * M_PI, 1e-9);
+  double farthest = 0;  // the bar left its end's place to turn
+  for (const Config& q : w) farthest = std::max(farthest, std::hypot(q[0] + 1, q[1]));
+  EXPECT_GT(farthest, 0.5);
+}
+
 // Rounds of shortcuts end once one stops paying: a path optimised once is given one round
 // more, not the four a fresh path may take.
 TEST(Optimize, RoundsStopOnceTheyStopPaying) {

@@ -1,0 +1,70 @@
+#include "path/SpinPlace.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/PolygonOps.h"
+
+namespace mms {
+
+double wallDistance(const Scene& scene, Vec2 p) {
+  const Box& b = scene.bounds;
+  double d = std::min({p.x - b.xmin, b.xmax - p.x, p.y - b.ymin, b.ymax - p.y});
+  for (const Ring& o : scene.obstacles) d = std::min(d, distanceToEdges(o, p));
+  return d;
+}
+
+Vec2 clearestNear(const Scene& scene, Vec2 p, double step) {
+  const double last = step * 1e-4;
+  double best = wallDistance(scene, p);
+  // Each move gains; the bound keeps a search along a ridge (a slot's axis) short.
+  for (int moves = 0; step > last && moves < 1000; ++moves) {
+    bool moved = false;
+    for (int d = 0; d < 8 && !moved; ++d) {
+      const Vec2 q{p.x + step * std::cos(d * M_PI / 4), p.y + step * std::sin(d * M_PI / 4)};
+      const double v = wallDistance(scene, q);
+      if (v > best) best = v, p = q, moved = true;
+    }
+    if (!moved) step /= 2;
+  }
+  return p;
+}
+
+namespace {
+
+// The pose at `q`'s angle whose reference point is the one `to` has at that angle, moved along
+// the robot's heading through `q` (its x axis): where a robot that came along its axis through
+// a slot leaves the slot's line.
+Pose alongHeading(const Config& q, size_t robot, Vec2 to) {
+  const size_t x = 3 * robot;
+  const Vec2 u{std::cos(q[x + 2]), std::sin(q[x + 2])};
+  const double s = (to.x - q[x]) * u.x + (to.y - q[x + 1]) * u.y;
+  return {q[x] + s * u.x, q[x + 1] + s * u.y, q[x + 2]};
+}
+
+}  // namespace
+
+std::vector<Config> turnAbout(const Config& a, const Config& b, size_t robot, Vec2 centre, Vec2 at,
+                              double maxStep) {
+  const size_t x = 3 * robot;
+  const double from = a[x + 2], to = b[x + 2];
+  auto spun = [&](double angle) {  // the reference point where `centre` lands on `at`
+    const Vec2 offset = Transform(Pose{0, 0, angle})(centre);
+    return Pose{at.x - offset.x, at.y - offset.y, angle};
+  };
+  std::vector<Pose> poses{alongHeading(a, robot, {spun(from).x, spun(from).y})};
+  const size_t steps = std::max<size_t>(1, size_t(std::ceil(std::fabs(to - from) / maxStep)));
+  for (size_t k = 0; k <= steps; ++k) poses.push_back(spun(from + (to - from) * double(k) / steps));
+  poses.push_back(alongHeading(b, robot, {spun(to).x, spun(to).y}));
+  std::vector<Config> out;
+  for (size_t k = 0; k < poses.size(); ++k) {
+    const double t = double(k + 1) / double(poses.size() + 1);
+    Config q(a.size());
+    for (size_t c = 0; c < a.size(); ++c) q[c] = a[c] + t * (b[c] - a[c]);
+    q[x] = poses[k].x, q[x + 1] = poses[k].y, q[x + 2] = poses[k].theta;
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+}  // namespace mms
