@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "check/PathChecker.h"
 #include "manifolds/Pivot.h"
@@ -155,6 +156,7 @@ class Optimizer {
     const std::vector<Run> runs = turningRuns(w, c);
     const std::vector<double> cum = cumulativeCost(w);
     const std::vector<Rewind> candidates = rewinds(w, runs, c);
+    spinPlaces_.clear();
     return rewindPass(w, robot, runs, cum, candidates, false) ||
            rewindPass(w, robot, runs, cum, candidates, true);
   }
@@ -163,12 +165,14 @@ class Optimizer {
                   const std::vector<double>& cum, const std::vector<Rewind>& candidates,
                   bool spin) {
     const size_t c = 3 * robot + 2;
-    size_t tries = 0;
+    size_t tries = 0, considered = 0;
     for (const Rewind& r : candidates) {
       if (spin && r.turns == 0) continue;
       const size_t from = runs[r.p].first, to = runs[r.q].second;
       for (const Carrier& carrier : carriersOf(r, spin)) {
         if (!spin && (tries++ == kRewindTries || done())) return false;
+        if (spin && (considered++ == kSpinCarriers || spinPlaces_.size() > kSpinPlaces))
+          return false;
         std::vector<Config> stretch(w.begin() + long(from), w.begin() + long(to) + 1);
         double before = 0, after = 0;
         for (size_t k = 1; k < stretch.size(); ++k) {
@@ -241,8 +245,13 @@ class Optimizer {
       size_t most = first;
       for (size_t k = first; k < last; ++k)
         if (std::fabs(w[k + 1][c] - w[k][c]) > std::fabs(w[most + 1][c] - w[most][c])) most = k;
-      const Vec2 at = clearestNear(scene_, centreAt(lerp(w[most], w[most + 1], 0.5)),
-                                   0.25 * checker_.radius(robot));
+      auto [place, fresh] = spinPlaces_.try_emplace(most);
+      if (fresh) {
+        const double radius = checker_.radius(robot);
+        place->second = clearestNear(scene_, centreAt(lerp(w[most], w[most + 1], 0.5)),
+                                     0.25 * radius, 2 * radius);
+      }
+      const Vec2 at = place->second;
       const double room = wallDistance(scene_, at);
       auto inside = [&](size_t k) {
         const Vec2 p = centreAt(w[k]);
@@ -454,10 +463,13 @@ class Optimizer {
   const OptimizeSettings& settings_;
   const Termination& stop_;
   OptimizeStats& s_;
-  static constexpr size_t kRewindTries = 32;  // certifications per robot and change
-  static constexpr size_t kSpinTries = 24;    // the same, for turns moved to spin in place
-  static constexpr double kSpinStep = 0.05;   // radians between a moved turn's waypoints
+  static constexpr size_t kRewindTries = 32;   // certifications per robot and change
+  static constexpr size_t kSpinTries = 24;     // the same, for turns moved to spin in place
+  static constexpr size_t kSpinCarriers = 64;  // and carriers built for them (each a stretch)
+  static constexpr size_t kSpinPlaces = 4;     // and places where the robot could spin, climbed to
+  static constexpr double kSpinStep = 0.05;    // radians between a moved turn's waypoints
   std::vector<Vec2> spinCentres_;
+  std::map<size_t, Vec2> spinPlaces_;         // per segment where a run turned most, in one rewind
   static constexpr double kMinSaving = 0.05;  // radians of back and forth worth a try
   PathCheckSettings quick_;
   size_t limit_ = 0;  // work at which the current step ends

@@ -14,7 +14,8 @@ double wallDistance(const Scene& scene, Vec2 p) {
   return d;
 }
 
-Vec2 clearestNear(const Scene& scene, Vec2 p, double step) {
+Vec2 clearestNear(const Scene& scene, Vec2 p, double step, double reach) {
+  const Vec2 start = p;
   const double last = step * 1e-4;
   double best = wallDistance(scene, p);
   // Each move gains; the bound keeps a search along a ridge (a slot's axis) short.
@@ -22,6 +23,7 @@ Vec2 clearestNear(const Scene& scene, Vec2 p, double step) {
     bool moved = false;
     for (int d = 0; d < 8 && !moved; ++d) {
       const Vec2 q{p.x + step * std::cos(d * M_PI / 4), p.y + step * std::sin(d * M_PI / 4)};
+      if (std::hypot(q.x - start.x, q.y - start.y) > reach) continue;
       const double v = wallDistance(scene, q);
       if (v > best) best = v, p = q, moved = true;
     }

@@ -30,7 +30,7 @@ TEST(SpinPlace, TheWallDistanceIsTheNearestEdgeOfObstaclesAndBounds) {
 TEST(SpinPlace, TheClimbEndsAtALocalMaximumOfTheWallDistance) {
   const Scene s = roomWithPost();
   for (const Vec2 start : {Vec2{1, 1}, Vec2{2.5, 3}, Vec2{5, 0.5}, Vec2{3, 1.7}}) {
-    const Vec2 p = clearestNear(s, start, 0.5);
+    const Vec2 p = clearestNear(s, start, 0.5, 10);
     const double d = wallDistance(s, p);
     EXPECT_GT(d, wallDistance(s, start) - 1e-12);
     // No point of a fine grid around it is clearer by more than the search's last step allows.
@@ -43,7 +43,7 @@ TEST(SpinPlace, TheClimbEndsAtALocalMaximumOfTheWallDistance) {
   Scene empty = roomWithPost();
   empty.obstacles.clear();
   empty.bounds = {0, 0, 4, 4};
-  const Vec2 c = clearestNear(empty, {0.7, 3.1}, 0.5);
+  const Vec2 c = clearestNear(empty, {0.7, 3.1}, 0.5, 10);
   EXPECT_NEAR(c.x, 2, 1e-3);
   EXPECT_NEAR(c.y, 2, 1e-3);
 }
