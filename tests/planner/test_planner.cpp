@@ -2,8 +2,11 @@
 // time, the same seed giving the same path.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <nlohmann/json.hpp>
+#include <thread>
+#include <vector>
 
 #include "Support.h"
 #include "io/SceneIO.h"
@@ -83,6 +86,38 @@ TEST(Plan, SameSeedSamePathFileDifferentSeedOtherwise) {
   // And the checker certifies the file the planner wrote.
   const Outcome c = runMms("check " + scene + " " + quote(dir.path("a.json")));
   EXPECT_EQ(c.code, 0) << c.out;
+}
+
+// A loaded machine changes how long each step takes, never which steps are taken: MMS and the
+// optimiser count work, not time. Every core kept busy by twice as many spinning threads.
+TEST(Plan, SamePathFileUnderLoad) {
+  TempDir dir;
+  const std::string keyhole = dir.path("keyhole.json"), niche = dir.path("niche.json");
+  ASSERT_EQ(runMms("scenario keyhole --seed 2 -o " + quote(keyhole)).code, 0);
+  ASSERT_EQ(runMms("scenario niche-swap --seed 1 -o " + quote(niche)).code, 0);
+  auto planned = [&](const std::string& scene, const char* name) {
+    const std::string out = dir.path(name);
+    const Outcome r =
+        runMms("plan " + quote(scene) + " --planner mms --seed 3 -q -o " + quote(out));
+    EXPECT_EQ(r.code, 0) << scene << ": " << r.out << r.err;
+    return readFile(out);
+  };
+  const std::string idleKeyhole = planned(keyhole, "k0.json"),
+                    idleNiche = planned(niche, "n0.json");
+  std::atomic<bool> stop{false};
+  std::vector<std::thread> load;
+  for (unsigned i = 0; i < 2 * std::max(1u, std::thread::hardware_concurrency()); ++i)
+    load.emplace_back([&stop] {
+      volatile double x = 1;
+      while (!stop.load(std::memory_order_relaxed)) x = x * 1.0000001 + 1e-9;
+    });
+  const std::string busyKeyhole = planned(keyhole, "k1.json"),
+                    busyNiche = planned(niche, "n1.json");
+  stop = true;
+  for (std::thread& t : load) t.join();
+  EXPECT_EQ(busyKeyhole, idleKeyhole);
+  EXPECT_EQ(busyNiche, idleNiche);
+  EXPECT_FALSE(idleKeyhole.empty());
 }
 
 // Slices (one robot) and overlays (two robots) are built in parallel batches and added in
