@@ -16,7 +16,7 @@ double wallDistance(const Scene& scene, Vec2 p) {
 
 Vec2 clearestNear(const Scene& scene, Vec2 p, double step, double reach) {
   const Vec2 start = p;
-  const double last = step * 1e-4;
+  const double last = step * 1e-3;
   double best = wallDistance(scene, p);
   // Each move gains; the bound keeps a search along a ridge (a slot's axis) short.
   for (int moves = 0; step > last && moves < 1000; ++moves) {

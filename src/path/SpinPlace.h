@@ -18,7 +18,7 @@ double wallDistance(const Scene& scene, Vec2 p);
 /// From `p`, up the distance to the walls to a local maximum (a chamber's centre), or as high as
 /// it gets within `reach` of `p` (in the open the maximum may be far, and a turn moved there
 /// costs more than it saves): a pattern search whose step, from `step`, halves until it is a
-/// ten-thousandth of where it began.
+/// thousandth of where it began.
 Vec2 clearestNear(const Scene& scene, Vec2 p, double step, double reach);
 
 /// The waypoints strictly between `a` and `b` of a motion in which `robot`, at `a`'s angle,

@@ -1,12 +1,14 @@
 #include "planner/OneRobotPlanner.h"
 
 #include <cmath>
+#include <limits>
 
 #include "geometry/PolygonOps.h"
 #include "manifolds/CellRoute.h"
 #include "manifolds/CellSampling.h"
 #include "manifolds/Pivot.h"
 #include "path/Motion.h"
+#include "path/SpinPlace.h"
 #include "planner/NoPath.h"
 #include "planner/Rounds.h"
 #include "util/Parallel.h"
@@ -96,14 +98,65 @@ void OneRobotPlanner::addPivotLines(const Pose& start, const Pose& goal) {
   // A turn about a part begins and ends where the robot comes and goes: the slices at the
   // start's and the goal's angles reach it there, where a robot that cannot turn in its
   // corridor meets no slice of the sequence for rounds.
-  addSlice(start.theta);
-  addSlice(goal.theta);
+  addEndSlices(start, goal);
   for (const Vec2 at : parts) {
     std::unique_ptr<PivotLineManifold> line;
     {
       const TimeCharge charge(stats_.manifolds.lineSeconds);
       line = std::make_unique<PivotLineManifold>(
           world, [&](const Pose& q) { return subspace().free(q); }, pocket->center, at,
+          &stats_.manifolds.lineStats);
+    }
+    ++stats_.manifolds.lines;
+    stats_.manifolds.lineArcs += line->cellCount();
+    subspace().addWovenLine(std::move(line), uint32_t(stats_.pivotLines++));
+  }
+}
+
+void OneRobotPlanner::addEndSlices(const Pose& start, const Pose& goal) {
+  if (endSlicesAdded_) return;
+  endSlicesAdded_ = true;
+  addSlice(start.theta);
+  addSlice(goal.theta);
+  extraSlices_ += 2;
+}
+
+// Where the robot can turn all the way round: local maxima of the distance to the walls at
+// least its smallest circle's radius, climbed to from a grid over the bounds (once per roadmap).
+std::vector<Vec2> OneRobotPlanner::spinPlaces(double radius) const {
+  constexpr int kGrid = 4;
+  const Box& b = contactScene_.bounds;
+  const double w = (b.xmax - b.xmin) / kGrid, h = (b.ymax - b.ymin) / kGrid;
+  std::vector<Vec2> places;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      checkpoint();  // among thousands of obstacles each climb takes a while
+      const Vec2 from{b.xmin + (i + 0.5) * w, b.ymin + (j + 0.5) * h};
+      const Vec2 at = clearestNear(contactScene_, from, 0.25 * std::min(w, h),
+                                   std::numeric_limits<double>::infinity());
+      if (wallDistance(contactScene_, at) < radius) continue;
+      bool taken = false;
+      for (const Ring& o : contactScene_.obstacles) taken = taken || insideRing(o, at);
+      for (const Vec2 p : places) taken = taken || std::hypot(p.x - at.x, p.y - at.y) < radius / 4;
+      if (!taken) places.push_back(at);
+    }
+  return places;
+}
+
+void OneRobotPlanner::addSpinPlaces() {
+  spinsAdded_ = true;
+  if (!settings_.spinPlaces) return;
+  const Disc circle = smallestCircle(contactScene_.robots[0].shape);
+  const std::vector<Vec2> places = spinPlaces(circle.radius);
+  spinPlacesFound_ = !places.empty();
+  if (places.empty()) return;
+  const LineWorld world = pivotWorld(contactScene_, circle.center);
+  for (const Vec2 at : places) {
+    std::unique_ptr<PivotLineManifold> line;
+    {
+      const TimeCharge charge(stats_.manifolds.lineSeconds);
+      line = std::make_unique<PivotLineManifold>(
+          world, [&](const Pose& q) { return subspace().free(q); }, circle.center, at,
           &stats_.manifolds.lineStats);
     }
     ++stats_.manifolds.lines;
@@ -191,7 +244,8 @@ OneRobotResult OneRobotPlanner::solveRounds(
     const std::function<void(const OneRobotStats&)>& progress) {
   Stopwatch total;
   OneRobotResult result;
-  stats_.noPath.clear();  // a proof about an earlier query of this roadmap
+  stats_.noPath.clear();    // a proof about an earlier query of this roadmap
+  endSlicesAdded_ = false;  // this query's start and goal angles get their own
   scene_.robots[0].start = start;
   scene_.robots[0].goal = goal;
   if (scene_.robots[0].motion == Motion::Translate) {
@@ -206,7 +260,10 @@ OneRobotResult OneRobotPlanner::solveRounds(
              to = sub.lineNodeAt(goalLine, goal.theta);
   if (from < 0 || to < 0) return finish(result, PlanStatus::NotFound, total.seconds());  // not free
 
-  size_t targetSlices = std::max(slices().size(), settings_.nTheta);
+  // The slices at the start's and goal's angles stand beside the sequence: counted in it they
+  // would shift the interleaving, and a scene solved in round one would build other manifolds.
+  auto sequenced = [&] { return slices().size() - extraSlices_; };
+  size_t targetSlices = std::max(sequenced(), settings_.nTheta);
   size_t targetLines = std::max(lines().size(), settings_.nLines);
   Stopwatch sinceReport;
   auto report = [&](bool force) {
@@ -218,11 +275,13 @@ OneRobotResult OneRobotPlanner::solveRounds(
   // few of either built (the angle sequence covers the circle evenly at every prefix). The
   // search runs as soon as start and goal connect: in open scenes a few dozen lines suffice.
   RoundHooks h;
-  h.growing = [&] { return slices().size() < targetSlices || lines().size() < targetLines; };
+  h.growing = [&] { return sequenced() < targetSlices || lines().size() < targetLines; };
   h.complete = [&] { return !h.growing(); };
   h.grow = [&] {
-    const bool slicesBehind = slices().size() * targetLines <= lines().size() * targetSlices;
-    if (slices().size() < targetSlices && (slicesBehind || lines().size() >= targetLines))
+    if (!spinsAdded_) addSpinPlaces();
+    if (spinPlacesFound_) addEndSlices(start, goal);
+    const bool slicesBehind = sequenced() * targetLines <= lines().size() * targetSlices;
+    if (sequenced() < targetSlices && (slicesBehind || lines().size() >= targetLines))
       addNextSlice();
     else
       sub.addLine(nextLinePoint());

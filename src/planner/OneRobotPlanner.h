@@ -41,6 +41,12 @@ struct OneRobotSettings {
   /// can swallow and turn about). Not in the first round, which solves every tight family but
   /// the swallow (docs/benchmarks.md) and so pays nothing.
   bool pivotLines = true;
+  /// From the first round, spin places: pivot lines turning the robot about the centre of its
+  /// smallest enclosing circle held at each local maximum of the clearance (climbed to from a
+  /// 4 x 4 grid over the bounds) where the robot can turn all the way round, with slices at
+  /// the start's and the goal's angles. A robot that must arrive and leave at given angles
+  /// turns there the short way (the keyhole: 3 manifolds instead of hundreds).
+  bool spinPlaces = true;
   /// Threads that build slices (each round's slices in batches of this many). The result does
   /// not depend on it: slices are added to the roadmap in angle order.
   unsigned threads = 1;
@@ -108,6 +114,9 @@ class OneRobotPlanner {
   /// Pivot lines about the obstacles that fit the robot's pocket, once, with slices at the
   /// start's and the goal's angles if there are any.
   void addPivotLines(const Pose& start, const Pose& goal);
+  std::vector<Vec2> spinPlaces(double radius) const;
+  void addSpinPlaces();
+  void addEndSlices(const Pose& start, const Pose& goal);
   void addSlice(double theta);
   void addNextSlice();
   PlanStatus solveTranslation(const Pose& start, const Pose& goal, OneRobotResult& result);
@@ -123,6 +132,10 @@ class OneRobotPlanner {
   Random rng_;
   AngleSequence angles_;
   bool pivotsAdded_ = false;
+  bool spinsAdded_ = false;
+  bool spinPlacesFound_ = false;  // some place where the robot can turn all the way round
+  bool endSlicesAdded_ = false;   // for this query
+  size_t extraSlices_ = 0;        // slices at queries' start and goal angles
   Roadmap roadmap_;
   std::vector<std::unique_ptr<Subspace>> subspaces_;  // exactly one: no robot is held
   // Slices of the next angles, built settings_.threads at a time ahead of their turn; they

@@ -11,6 +11,7 @@
 #include "Support.h"
 #include "io/SceneIO.h"
 #include "manifolds/Pivot.h"
+#include "path/Optimize.h"
 #include "planner/OneRobotPlanner.h"
 #include "scenarios/Generators.h"
 
@@ -292,4 +293,27 @@ TEST(Plan, PivotLinesTurnTheSwallowInTheSecondRound) {
   }
   EXPECT_LE(with, 4 * 2u + 1);
   EXPECT_GT(without, with);
+}
+
+// A key must arrive and leave aligned with two slots and turns a quarter in a chamber barely
+// larger than its turning circle. Spin places (its smallest circle's centre held where the
+// clearance peaks) and slices at the start's and goal's angles give it the path a hand draws:
+// along the start's angle, a quarter turn the short way in the chamber, along the goal's angle;
+// in the first round and before any optimiser.
+TEST(Plan, SpinPlacesTurnTheKeyTheShortWayInTheFirstRound) {
+  for (uint64_t k = 1; k <= 4; ++k) {
+    const Scene s = keyholeScene(k);
+    const CollisionChecker checker(s);
+    OneRobotPlanner planner(s, 0, OneRobotSettings{});
+    const OneRobotResult r =
+        planner.solve(s.robots[0].start, s.robots[0].goal, Termination(planSeconds(60)));
+    ASSERT_EQ(r.status, PlanStatus::Found) << s.name;
+    EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << s.name;
+    EXPECT_EQ(r.stats.rounds, 1u) << s.name;
+    double rotation = 0;
+    for (size_t i = 1; i < r.waypoints.size(); ++i)
+      rotation += std::fabs(r.waypoints[i][2] - r.waypoints[i - 1][2]);
+    EXPECT_LE(rotation, 1.05 * minimumRotation(s)) << s.name;
+    EXPECT_GE(r.stats.pivotLines, 1u) << s.name;
+  }
 }
