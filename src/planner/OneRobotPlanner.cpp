@@ -99,18 +99,20 @@ void OneRobotPlanner::addPivotLines(const Pose& start, const Pose& goal) {
   // start's and the goal's angles reach it there, where a robot that cannot turn in its
   // corridor meets no slice of the sequence for rounds.
   addEndSlices(start, goal);
-  for (const Vec2 at : parts) {
-    std::unique_ptr<PivotLineManifold> line;
-    {
-      const TimeCharge charge(stats_.manifolds.lineSeconds);
-      line = std::make_unique<PivotLineManifold>(
-          world, [&](const Pose& q) { return subspace().free(q); }, pocket->center, at,
-          &stats_.manifolds.lineStats);
-    }
-    ++stats_.manifolds.lines;
-    stats_.manifolds.lineArcs += line->cellCount();
-    subspace().addWovenLine(std::move(line), uint32_t(stats_.pivotLines++));
+  for (const Vec2 at : parts) addPivotLine(world, pocket->center, at);
+}
+
+void OneRobotPlanner::addPivotLine(const LineWorld& world, Vec2 pivot, Vec2 at) {
+  std::unique_ptr<PivotLineManifold> line;
+  {
+    const TimeCharge charge(stats_.manifolds.lineSeconds);
+    line = std::make_unique<PivotLineManifold>(
+        world, [&](const Pose& q) { return subspace().free(q); }, pivot, at,
+        &stats_.manifolds.lineStats);
   }
+  ++stats_.manifolds.lines;
+  stats_.manifolds.lineArcs += line->cellCount();
+  subspace().addWovenLine(std::move(line), uint32_t(stats_.pivotLines++));
 }
 
 void OneRobotPlanner::addEndSlices(const Pose& start, const Pose& goal) {
@@ -151,18 +153,7 @@ void OneRobotPlanner::addSpinPlaces() {
   spinPlacesFound_ = !places.empty();
   if (places.empty()) return;
   const LineWorld world = pivotWorld(contactScene_, circle.center);
-  for (const Vec2 at : places) {
-    std::unique_ptr<PivotLineManifold> line;
-    {
-      const TimeCharge charge(stats_.manifolds.lineSeconds);
-      line = std::make_unique<PivotLineManifold>(
-          world, [&](const Pose& q) { return subspace().free(q); }, circle.center, at,
-          &stats_.manifolds.lineStats);
-    }
-    ++stats_.manifolds.lines;
-    stats_.manifolds.lineArcs += line->cellCount();
-    subspace().addWovenLine(std::move(line), uint32_t(stats_.pivotLines++));
-  }
+  for (const Vec2 at : places) addPivotLine(world, circle.center, at);
 }
 
 void OneRobotPlanner::addSlice(double theta) {

@@ -114,6 +114,7 @@ class OneRobotPlanner {
   /// Pivot lines about the obstacles that fit the robot's pocket, once, with slices at the
   /// start's and the goal's angles if there are any.
   void addPivotLines(const Pose& start, const Pose& goal);
+  void addPivotLine(const LineWorld& world, Vec2 pivot, Vec2 at);
   std::vector<Vec2> spinPlaces(double radius) const;
   void addSpinPlaces();
   void addEndSlices(const Pose& start, const Pose& goal);
