@@ -270,7 +270,9 @@ OneRobotResult OneRobotPlanner::solveRounds(
   h.complete = [&] { return !h.growing(); };
   h.grow = [&] {
     if (!spinsAdded_) addSpinPlaces();
-    if (spinPlacesFound_) addEndSlices(start, goal);
+    // After two slices of the sequence: where those connect start and goal (open scenes, many
+    // imported ones), two more slices among hundreds of obstacles would double the time.
+    if (spinPlacesFound_ && sequenced() >= 2) addEndSlices(start, goal);
     const bool slicesBehind = sequenced() * targetLines <= lines().size() * targetSlices;
     if (sequenced() < targetSlices && (slicesBehind || lines().size() >= targetLines))
       addNextSlice();
