@@ -43,9 +43,10 @@ struct OneRobotSettings {
   bool pivotLines = true;
   /// From the first round, spin places: pivot lines turning the robot about the centre of its
   /// smallest enclosing circle held at each local maximum of the clearance (climbed to from a
-  /// 4 x 4 grid over the bounds) where the robot can turn all the way round, with slices at
-  /// the start's and the goal's angles. A robot that must arrive and leave at given angles
-  /// turns there the short way (the keyhole: 3 manifolds instead of hundreds).
+  /// 4 x 4 grid over the bounds) where the robot can turn all the way round, and slices at
+  /// the start's and the goal's angles once two slices of the sequence have not connected them.
+  /// A robot that must arrive and leave at given angles turns there the short way (the keyhole:
+  /// its path on 5 of some 72 manifolds, not hundreds).
   bool spinPlaces = true;
   /// Threads that build slices (each round's slices in batches of this many). The result does
   /// not depend on it: slices are added to the roadmap in angle order.
