@@ -5,6 +5,7 @@
 #include <sstream>
 #include <vector>
 
+#include "geometry/BroadPhase.h"
 #include "mms/Termination.h"
 
 namespace mms {
@@ -41,6 +42,8 @@ class StraightMotion {
     b_ = &b;
     k_ = checker.robotCount();
     rate_.assign(k_, 0.0);
+    radii_.resize(k_);
+    for (size_t i = 0; i < k_; ++i) radii_[i] = checker.radius(i);
     translation_ = rotation_ = maxRate_ = 0;
     minRate_ = kInf;
     for (size_t i = 0; i < k_; ++i) {
@@ -80,13 +83,31 @@ class StraightMotion {
       const auto c = checker.robotClearance(i, pose(i, s), cutoff(bound));
       if (!visit(c.distance, bound, i, c.nearest)) return;
     }
-    for (size_t i = 0; i < k_; ++i)
-      for (size_t j = i + 1; j < k_; ++j) {
-        if (movingOnly != (rate_[i] > 0 || rate_[j] > 0)) continue;
-        const double bound = half * (rate_[i] + rate_[j]);
-        const double d = checker.robotsDistance(i, pose(i, s), j, pose(j, s), cutoff(bound));
-        if (!visit(d, bound, i, Contact{Contact::Kind::Robot, j})) return;
-      }
+    auto pair = [&](size_t i, size_t j) {
+      const double bound = half * (rate_[i] + rate_[j]);
+      const double d = checker.robotsDistance(i, pose(i, s), j, pose(j, s), cutoff(bound));
+      return visit(d, bound, i, Contact{Contact::Kind::Robot, j});
+    };
+    auto counts = [&](size_t i, size_t j) { return movingOnly == (rate_[i] > 0 || rate_[j] > 0); };
+    if (k_ <= CollisionChecker::kAllPairsUpTo) {
+      for (size_t i = 0; i < k_; ++i)
+        for (size_t j = i + 1; j < k_; ++j)
+          if (counts(i, j) && !pair(i, j)) return;
+      return;
+    }
+    // Many robots: only pairs whose discs come within their cutoff can change the answer (a
+    // pair further apart would be reported at the cutoff, which the caller ignores).
+    centres_.resize(k_);
+    for (size_t i = 0; i < k_; ++i) {
+      const Pose p = pose(i, s);
+      centres_[i] = {p.x, p.y};
+    }
+    const double reach = cutoff(2 * half * maxRate_);
+    const auto& near = sweep_.near(centres_, radii_, reach, [&](size_t i, size_t j, double gap) {
+      return counts(i, j) && gap < cutoff(half * (rate_[i] + rate_[j]));
+    });
+    for (const auto& [i, j] : near)
+      if (!pair(i, j)) return;
   }
 
  private:
@@ -99,7 +120,9 @@ class StraightMotion {
   const CollisionChecker* checker_ = nullptr;
   const Config *a_ = nullptr, *b_ = nullptr;
   size_t k_ = 0;
-  std::vector<double> rate_;
+  std::vector<double> rate_, radii_;
+  mutable std::vector<Vec2> centres_;  // scratch of the broad phase, kept between evaluations
+  mutable DiscSweep sweep_;
   double translation_ = 0, rotation_ = 0, maxRate_ = 0, minRate_ = kInf;
 };
 

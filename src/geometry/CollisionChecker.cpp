@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "geometry/BroadPhase.h"
 #include "geometry/PolygonOps.h"
 #include "geometry/Predicates.h"
 
@@ -89,10 +90,22 @@ std::optional<std::pair<size_t, Contact>> CollisionChecker::firstContact(const C
     Contact c = robotContact(i, poseOf(q, i));
     if (c.kind != Contact::Kind::None) return std::pair(i, c);
   }
-  for (size_t i = 0; i < k; ++i)
-    for (size_t j = i + 1; j < k; ++j)
-      if (!robotsDisjoint(i, poseOf(q, i), j, poseOf(q, j)))
-        return std::pair(i, Contact{Contact::Kind::Robot, j});
+  if (k <= kAllPairsUpTo) {
+    for (size_t i = 0; i < k; ++i)
+      for (size_t j = i + 1; j < k; ++j)
+        if (!robotsDisjoint(i, poseOf(q, i), j, poseOf(q, j)))
+          return std::pair(i, Contact{Contact::Kind::Robot, j});
+    return std::nullopt;
+  }
+  thread_local DiscSweep sweep;
+  thread_local std::vector<Vec2> centres;
+  centres.resize(k);
+  for (size_t i = 0; i < k; ++i) centres[i] = {q[3 * i], q[3 * i + 1]};
+  // Discs a tolerance apart or more hold shapes that cannot overlap.
+  for (const auto& [i, j] :
+       sweep.near(centres, radii_, tolerance_, [](size_t, size_t, double) { return true; }))
+    if (!robotsDisjoint(i, poseOf(q, i), j, poseOf(q, j)))
+      return std::pair(i, Contact{Contact::Kind::Robot, j});
   return std::nullopt;
 }
 

@@ -63,6 +63,9 @@ class CollisionChecker {
                         double bound = std::numeric_limits<double>::infinity()) const;
 
   double tolerance() const { return tolerance_; }
+  /// Up to this many robots every pair is tested; beyond, only pairs a sweep over the robots'
+  /// discs finds near (geometry/BroadPhase.h). Either way the same pairs collide.
+  static constexpr size_t kAllPairsUpTo = 16;
   /// Largest distance of a shape point from its frame origin: a rotation by dtheta moves no
   /// point of the robot further than radius * |dtheta|.
   double radius(size_t robot) const { return radii_[robot]; }

@@ -155,7 +155,11 @@ bool ringsIntersect(const Ring& a, const Box& boxA, const Ring& b, const Box& bo
 
 double ringDistance(const Ring& a, const Box& boxA, const Ring& b, const Box& boxB, double bound) {
   if (ringsIntersect(a, boxA, b, boxB)) return 0.0;
-  double best2 = bound * bound;  // squared
+  // Squared; a bound just past 0 (a denormal) must not square to 0, or every pair that does
+  // not intersect would come out at distance 0, a contact.
+  double best2 = bound * bound;
+  if (bound > 0 && best2 < std::numeric_limits<double>::min())
+    best2 = std::numeric_limits<double>::min();
   const size_t n = a.size(), m = b.size();
   for (size_t i = 0, ip = n - 1; i < n; ip = i++) {
     const Box e = segmentBox(a[ip], a[i]);
