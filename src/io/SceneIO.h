@@ -9,7 +9,9 @@
 namespace mms {
 
 inline constexpr const char* kSceneFormat = "mms-scene/1";
-inline constexpr size_t kMaxRobots = 16;
+/// Limits of the format, far above what planning takes, so that a runaway file (a million
+/// robots) is refused at once with one line instead of filling memory.
+inline constexpr size_t kMaxRobots = 100000;
 inline constexpr size_t kMaxObstacles = 100000;
 
 Scene loadScene(const std::string& file);

@@ -354,3 +354,60 @@ TEST(SceneErrors, MessagesStayOneLineWhateverTheInputQuotes) {
     EXPECT_NE(m.find("mms-sc?e/1?"), std::string::npos) << m;
   }
 }
+
+namespace {
+
+// n unit squares on a grid `spacing` apart, each going to the mirrored cell.
+json gridScene(size_t n, double spacing) {
+  json robots = json::array();
+  const size_t cols = size_t(std::ceil(std::sqrt(double(n))));
+  for (size_t i = 0; i < n; ++i) {
+    const double x = spacing * double(i % cols + 1), y = spacing * double(i / cols + 1);
+    std::string name = "d";
+    name += std::to_string(i);  // not "d" + ...: GCC 12 warns there (-Wrestrict, a false positive)
+    robots.push_back({{"name", name},
+                      {"shape", square(-0.5, -0.5, 1)},
+                      {"start", {x, y, 0}},
+                      {"goal", {y, x, 0}},
+                      {"motion", "translate"}});
+  }
+  const double side = spacing * double(cols + 2);
+  return {{"format", "mms-scene/1"},
+          {"bounds", {0, 0, side, side}},
+          {"obstacles", json::array()},
+          {"robots", robots}};
+}
+
+}  // namespace
+
+TEST(SceneLoad, HundredsOfRobotsLoadAndTwoThatOverlapAreNamed) {
+  const Scene s = parseScene(gridScene(500, 2), "grid.json");
+  EXPECT_EQ(s.robots.size(), 500u);
+  json j = gridScene(500, 2);
+  // Robot 321 put onto robot 123's start: the pair is named, whatever their order in the sweep.
+  j["robots"][321]["start"] = j["robots"][123]["start"];
+  try {
+    parseScene(j, "grid.json");
+    FAIL() << "overlapping robots accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("robots[321].start"), std::string::npos) << what;
+    EXPECT_NE(what.find("'d321' collides with robot 'd123'"), std::string::npos) << what;
+  }
+}
+
+TEST(SceneLoad, ARunawayCountOfRobotsIsRefusedWithOneLine) {
+  json j = baseScene();
+  j["robots"] = json::array();
+  const json robot = baseScene()["robots"][0];
+  for (size_t i = 0; i <= kMaxRobots; ++i) j["robots"].push_back(robot);
+  try {
+    parseScene(j, "big.json");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("robots"), std::string::npos) << what;
+    EXPECT_NE(what.find("too many"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
