@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "geometry/PolygonOps.h"
 #include "io/Json.h"
 #include "io/SceneIO.h"
 
@@ -41,6 +42,27 @@ double positive(const Node& n) {
   double v = n.number(json_in::kMaxCoordinate);
   if (!(v > 0)) n.fail("must be positive");
   return v;
+}
+
+// discopygal plans in the open plane. The box around obstacles and robots (at start and goal)
+// grown by the largest robot's diameter, with 10 % to spare, leaves a ring round everything in
+// which any robot passes: nobody is walled in where the plane would have let them by.
+Box openPlaneBounds(const Scene& scene) {
+  Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  auto grow = [&](Vec2 p) {
+    b.xmin = std::min(b.xmin, p.x), b.ymin = std::min(b.ymin, p.y);
+    b.xmax = std::max(b.xmax, p.x), b.ymax = std::max(b.ymax, p.y);
+  };
+  for (const Ring& o : scene.obstacles)
+    for (Vec2 v : o) grow(v);
+  double diameter = 0;
+  for (const Robot& r : scene.robots) {
+    diameter = std::max(diameter, 2 * radius(r.shape));
+    for (const Pose& p : {r.start, r.goal})
+      for (Vec2 v : placedRing(r.shape, p)) grow(v);
+  }
+  const double margin = 1.1 * diameter;
+  return {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
 }
 
 }  // namespace
@@ -131,22 +153,11 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
   if (discRobots)
     notes.warnings.push_back(std::to_string(discRobots) + " disc robot(s) as " +
                              std::to_string(kDiscSides) + "-gons around the discs (conservative)");
-  // Bounds: the box around obstacles and robots at start and goal, grown by 5 %.
-  Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
-  auto grow = [&](Vec2 p) {
-    b.xmin = std::min(b.xmin, p.x), b.ymin = std::min(b.ymin, p.y);
-    b.xmax = std::max(b.xmax, p.x), b.ymax = std::max(b.ymax, p.y);
-  };
-  for (const Ring& o : scene.obstacles)
-    for (Vec2 v : o) grow(v);
-  for (const Robot& r : scene.robots)
-    for (const Pose& p : {r.start, r.goal})
-      for (Vec2 v : placedRing(r.shape, p)) grow(v);
-  const double margin = 0.05 * std::max(b.xmax - b.xmin, b.ymax - b.ymin);
-  scene.bounds = {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
+  scene.bounds = openPlaneBounds(scene);
   notes.warnings.push_back(
-      "bounds: none in discopygal; the box around obstacles and robots, "
-      "grown by 5 %");
+      "bounds: none in discopygal; the box around obstacles and robots, grown on every side by "
+      "the largest robot's diameter and 10 % more, so that every robot can pass round "
+      "everything");
   return parseScene(sceneToJson(scene), file);
 }
 

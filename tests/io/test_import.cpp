@@ -527,5 +527,31 @@ TEST(Import, FuzzedReadersFailWithOneLine) {
             "f.dae: <library_visual_scenes>: no visual scene");
 }
 
+// discopygal plans in the open plane: a disc that must walk round a wall spanning everything
+// else is not walled in by the bounds the import makes, and the bounds are said once.
+TEST(Import, DiscopygalBoundsLetEveryRobotPassRoundEverything) {
+  TempDir dir;
+  const std::string scene = R"({"__class__": "Scene",
+    "obstacles": [{"__class__": "ObstaclePolygon", "poly": [[0, 4], [10, 4], [10, 6], [0, 6]]}],
+    "robots": [{"__class__": "RobotDisc", "radius": 1, "start": [5, 2], "end": [5, 8]},
+               {"__class__": "RobotDisc", "radius": 1, "start": [2, 1.5], "end": [8, 8.5]}]})";
+  const std::string file = dir.file("wall.json", scene), out = dir.path("out.json");
+  auto r = runMms("import " + quote(file) + " -o " + quote(out));
+  ASSERT_EQ(r.code, 0) << r.err;
+  size_t said = 0;
+  for (size_t at = r.err.find("bounds:"); at != std::string::npos;
+       at = r.err.find("bounds:", at + 1))
+    ++said;
+  EXPECT_EQ(said, 1u) << r.err;
+  const Scene s = loadScene(out);
+  // Round the wall's end: a corridor at least a diameter (2) wide beyond x = 10 and x = 0.
+  EXPECT_GE(s.bounds.xmax - 10, 2.0);
+  EXPECT_LE(s.bounds.xmin, -2.0);
+  const std::string path = dir.path("path.json");
+  r = runMms("plan " + quote(out) + " --planner mms --seed 1 --time-limit 30 -o " + quote(path));
+  EXPECT_EQ(r.code, 0) << r.err << r.out;
+  EXPECT_TRUE(std::filesystem::exists(path));
+}
+
 }  // namespace
 }  // namespace mms
