@@ -485,8 +485,14 @@ Command addScenario(CLI::App& app) {
             ->add_option(
                 "--robots", sa.robots,
                 "random: 1 or 2 robots (default: from the seed); discs-room: how many discs "
-                "(default 10, at most 16)")
-            ->check(CLI::Range(1, 16));
+                "(default 10, at most 16); disc-grid, disc-triangles: how many discs (default "
+                "20, at most 2000)")
+            ->check(CLI::Range(1, 2000));
+        scenarioCmd
+            ->add_option("--spacing", sa.spacing,
+                         "disc-grid: centres of neighbouring discs apart, in radii (3: dense, "
+                         "10: sparse; default 3, 5 or 10 from the seed)")
+            ->check(CLI::Range(2.05, 100.0));
         scenarioCmd
             ->add_option("--obstacles", sa.obstacles,
                          "random: how many obstacles (default: from the seed)")

@@ -298,9 +298,9 @@ std::vector<Job> planJobs(const BenchSettings& a) {
                   "-q"};
         for (const std::string& extra : split(j.record.parameters, ' ')) j.args.push_back(extra);
         // The portfolio races its sampler beside MMS's threads.
-        j.cores = planner == "mms"    ? coresOf(j.args, a.jobs)
-                  : planner == "auto" ? std::min(a.jobs, 1 + coresOf(j.args, a.jobs))
-                                      : 1;
+        j.cores = planner.rfind("mms", 0) == 0 ? coresOf(j.args, a.jobs)
+                  : planner == "auto"          ? std::min(a.jobs, 1 + coresOf(j.args, a.jobs))
+                                               : 1;
         jobs.push_back(std::move(j));
       }
   return jobs;

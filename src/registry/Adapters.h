@@ -10,6 +10,11 @@ namespace mms {
 
 /// "mms": MMS for one robot (OneRobotPlanner) or two (TwoRobotPlanner), chosen by the scene.
 PlannerInfo mmsPlannerInfo();
+/// "mms-ordered": robots one at a time (OrderedPlanner), which "mms" is from kOrderedFrom robots.
+PlannerInfo orderedPlannerInfo();
+/// "mms-joint": recursive MMS (one, two or k robots), which "mms" is below kOrderedFrom robots.
+PlannerInfo jointPlannerInfo();
+inline constexpr size_t kOrderedFrom = 8;
 /// Whether "mms" takes the scene (one or two robots).
 bool mmsTakes(const Scene& scene);
 /// "auto": MMS and a sampling planner racing, the first certified path winning.

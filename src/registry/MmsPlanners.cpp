@@ -8,6 +8,7 @@
 #include "mms/Errors.h"
 #include "planner/KRobotPlanner.h"
 #include "planner/OneRobotPlanner.h"
+#include "planner/OrderedPlanner.h"
 #include "planner/Rounds.h"
 #include "planner/TwoRobotPlanner.h"
 #include "registry/Adapters.h"
@@ -104,6 +105,28 @@ PlanStatistics statisticsOf(const KRobotStats& s) {
                                      {"cross_edges", s.crossEdges},
                                      {"path_subspaces", s.pathSubspaces}});
   insertAfter(p.phases, "connect", {"cross", s.crossSeconds});
+  return p;
+}
+
+PlanStatistics statisticsOf(const OrderedStats& s) {
+  PlanStatistics p;
+  p.seconds = s.totalSeconds;
+  p.rounds = s.passes;
+  p.manifoldsBuilt = s.baseSlices + s.overlays;
+  p.noPath = s.noPath;
+  p.counts = {{"passes", s.passes},
+              {"moves", s.moves},
+              {"straight_moves", s.straightMoves},
+              {"route_moves", s.routeMoves},
+              {"overlay_moves", s.overlayMoves},
+              {"base_slices", s.baseSlices},
+              {"overlays", s.overlays},
+              {"joint_robots", s.jointRobots}};
+  p.phases = {{"base_slices", s.baseSliceSeconds},
+              {"routes", s.routeSeconds},
+              {"overlays", s.overlaySeconds},
+              {"joint", s.jointSeconds},
+              {"certify", s.certifySeconds}};
   return p;
 }
 
@@ -262,6 +285,7 @@ class ManyRobotMms : public Planner {
 };
 using TwoRobotMms = ManyRobotMms<TwoRobotPlanner, TwoRobotSettings, TwoRobotStats>;
 using KRobotMms = ManyRobotMms<KRobotPlanner, KRobotSettings, KRobotStats>;
+using OrderedMms = ManyRobotMms<OrderedPlanner, OrderedSettings, OrderedStats>;
 
 // The settings the MMS planners share, from the parameters given (the rest keep the struct's
 // defaults).
@@ -281,8 +305,19 @@ Settings settingsFrom(const PlannerParams& params, const std::vector<ParamSpec>&
   return s;
 }
 
-std::unique_ptr<Planner> makeMms(const Scene& scene, const PlannerParams& params,
-                                 const std::string& source) {
+std::unique_ptr<Planner> makeOrdered(const Scene& scene, const PlannerParams& params,
+                                     const std::string& source) {
+  if (scene.robots.empty()) throw InputError(source + ": robots: none; the mms planner needs one");
+  const std::vector<ParamSpec> specs = mmsParams();
+  OrderedSettings s;
+  s.seed = params.seed;
+  s.threads = threadsOf(paramValue(params, specs[kThreads]));
+  return std::make_unique<OrderedMms>(scene, s, std::map<std::string, double>{});
+}
+
+// Recursive MMS: one robot, two, or k robots all but one held (the paper's planners).
+std::unique_ptr<Planner> makeJoint(const Scene& scene, const PlannerParams& params,
+                                   const std::string& source) {
   const std::vector<ParamSpec> specs = mmsParams();
   if (scene.robots.size() == 1) {
     const auto s = settingsFrom<OneRobotSettings>(params, specs);
@@ -308,6 +343,12 @@ std::unique_ptr<Planner> makeMms(const Scene& scene, const PlannerParams& params
       std::map<std::string, double>{{"n_theta", double(s.nTheta)}, {"n_lines", double(s.nLines)}});
 }
 
+std::unique_ptr<Planner> makeMms(const Scene& scene, const PlannerParams& params,
+                                 const std::string& source) {
+  if (scene.robots.size() >= kOrderedFrom) return makeOrdered(scene, params, source);
+  return makeJoint(scene, params, source);
+}
+
 }  // namespace
 
 bool mmsTakes(const Scene& scene) { return !scene.robots.empty(); }
@@ -322,6 +363,30 @@ PlannerInfo mmsPlannerInfo() {
   info.params = mmsParams();
   info.multiQuery = true;
   info.make = makeMms;
+  return info;
+}
+
+PlannerInfo orderedPlannerInfo() {
+  PlannerInfo info;
+  info.name = "mms-ordered";
+  info.summary =
+      "MMS for many robots: one at a time, in an order, each through its exact slice among the "
+      "obstacles and the robots standing near its way; robots that block each other to the "
+      "k-robot MMS (mms chooses it from " +
+      std::to_string(kOrderedFrom) + " robots)";
+  info.params = {mmsParams()[kThreads]};
+  info.make = makeOrdered;
+  return info;
+}
+
+PlannerInfo jointPlannerInfo() {
+  PlannerInfo info = mmsPlannerInfo();
+  info.name = "mms-joint";
+  info.summary =
+      "Recursive MMS over all robots at once whatever their number (mms chooses it below " +
+      std::to_string(kOrderedFrom) + " robots)";
+  info.multiQuery = false;
+  info.make = makeJoint;
   return info;
 }
 

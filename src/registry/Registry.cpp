@@ -22,7 +22,9 @@ const std::vector<PlannerInfo>& planners() {
     // MMS's paths are optimised by default; OMPL's planners keep OMPL's own simplifier
     // (--simplify), so that they are the baselines OMPL's users know.
     std::vector<PlannerInfo> v{withPathOptimization(portfolioPlannerInfo(), true),
-                               withPathOptimization(mmsPlannerInfo(), true)};
+                               withPathOptimization(mmsPlannerInfo(), true),
+                               withPathOptimization(orderedPlannerInfo(), true),
+                               withPathOptimization(jointPlannerInfo(), true)};
     for (PlannerInfo& i : omplPlannerInfos())
       v.push_back(withPathOptimization(std::move(i), false));
     return v;

@@ -13,10 +13,12 @@
 namespace mms {
 
 const std::vector<std::string>& scenarioNames() {
-  static const std::vector<std::string> names{
-      "pacman",     "viking-helmet", "random-polygons", "assembly-1", "assembly-2", "random",
-      "carry-turn", "niche-swap",    "niche-three",     "discs-swap", "discs-room", "open-clutter",
-      "bend",       "doors",         "keyhole",         "swallow"};
+  static const std::vector<std::string> names{"pacman",     "viking-helmet", "random-polygons",
+                                              "assembly-1", "assembly-2",    "random",
+                                              "carry-turn", "niche-swap",    "niche-three",
+                                              "discs-swap", "discs-room",    "open-clutter",
+                                              "bend",       "doors",         "keyhole",
+                                              "swallow",    "disc-grid",     "disc-triangles"};
   return names;
 }
 
@@ -84,6 +86,10 @@ Scene generate(const ScenarioRequest& r) {
   if (n == "discs-swap") return discsSwapScene(r.seed);
   if (n == "discs-room") return discsRoomScene(r.seed, r.robots > 0 ? size_t(r.robots) : 10);
   if (n == "open-clutter") return openClutterScene(r.seed);
+  if (n == "disc-grid")
+    return discGridScene(r.seed, r.robots > 0 ? size_t(r.robots) : 20, r.spacing);
+  if (n == "disc-triangles")
+    return discTrianglesScene(r.seed, r.robots > 0 ? size_t(r.robots) : 20);
   if (n == "bend") return bendScene(r.seed);
   if (n == "doors") return doorsScene(r.seed);
   return randomPolygonsTwoRobots(r.seed);
@@ -102,7 +108,9 @@ Scene makeScenario(const ScenarioRequest& r, const std::string& prefix) {
                      didYouMean(r.name, scenarioNames()));
   requireRange(prefix, "tightness", r.tightness, 0, 0.999);
   requireRange(prefix, "slack", r.slack, 0.001, 1);
-  if (r.robots != 0) requireRange(prefix, "robots", r.robots, 1, 16);
+  const bool manyDiscs = r.name == "disc-grid" || r.name == "disc-triangles";
+  if (r.robots != 0) requireRange(prefix, "robots", r.robots, 1, manyDiscs ? 2000 : 16);
+  if (r.spacing != 0) requireRange(prefix, "spacing", r.spacing, 2.05, 100);
   if (r.obstacles != -1) requireRange(prefix, "obstacles", r.obstacles, 0, 100000);
   if ((r.name == "assembly-1" || r.name == "assembly-2") && r.slack > 0.15)
     throw InputError(prefix + "slack: " + formatNumber(r.slack) + " is more than " + r.name +

@@ -17,6 +17,7 @@ struct ScenarioRequest {
   bool slackGiven = false;
   bool mPartsOnly = false;         // assembly-2
   int robots = 0, obstacles = -1;  // random: 0 / -1 = drawn from the seed; discs-room: robots
+  double spacing = 0;              // disc-grid: centres apart, in radii (0: from the seed)
   // Robots (by name) that only translate; each must keep its angle from start to goal. The scene
   // is named apart ("niche-three-oncoming-translates-3"), so a benchmark keeps both variants.
   std::vector<std::string> translate;

@@ -139,4 +139,17 @@ Scene assemblyOneScene(double slack);
 /// 4-D problem of the last step, for `mms plan` and `mms bench`. `slack` in (0, 0.15].
 Scene assemblyTwoScene(double slack, bool mPartsOnly = false);
 
+/// Discs on a grid going to the same grid moved along one of eight directions (one to three
+/// spacings clear of it), each disc to its own place there: `count` unit discs, `spacing` between
+/// neighbours' centres in radii (3: dense, a disc cannot pass between two; 10: sparse; 0: 3, 5
+/// or 10 from the seed). Random per seed: the grid's aspect, the direction, the gap and a turn of
+/// the whole.
+Scene discGridScene(uint64_t seed, size_t count, double spacing = 0);
+
+/// `count` unit discs among random triangles (a quarter to 0.85 of `count`, kept a diameter
+/// apart so the free space is one piece), in a square of 70-150 area per disc; every start and
+/// goal in a free disc of radius 2 holding no other start or goal (revolving areas), so that
+/// the discs can go one at a time.
+Scene discTrianglesScene(uint64_t seed, size_t count);
+
 }  // namespace mms

@@ -1,0 +1,270 @@
+#include "planner/OrderedPlanner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <optional>
+
+#include "geometry/Exact.h"
+#include "geometry/PolygonOps.h"
+#include "manifolds/CellRoute.h"
+#include "manifolds/Slice.h"
+#include "planner/KRobotPlanner.h"
+#include "planner/OneRobotPlanner.h"
+#include "planner/Subspace.h"
+#include "planner/TwoRobotPlanner.h"
+
+namespace mms {
+
+namespace {
+
+constexpr size_t kJointRoundsFirst = 4;
+
+bool sameAngle(double a, double b) { return std::fabs(std::remainder(a - b, 2 * M_PI)) < 1e-12; }
+
+constexpr size_t kNearAttempts = 3;
+
+double distanceToPolyline(Vec2 p, const std::vector<Vec2>& line) {
+  double best = norm(p - line[0]);
+  for (size_t k = 1; k < line.size(); ++k) {
+    const Vec2 a = line[k - 1], d = line[k] - a;
+    const double len2 = dot(d, d);
+    const double t = len2 > 0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, norm(p - (a + t * d)));
+  }
+  return best;
+}
+
+// The route from a to b inside one cell of `slice`, if both lie in the same cell.
+std::optional<std::vector<Vec2>> routeIn(const Slice& slice, Vec2 a, Vec2 b) {
+  const int cell = slice.locate(a);
+  if (cell < 0 || slice.locate(b) != cell) return std::nullopt;
+  return routeInCell(
+      slice.cell(size_t(cell)), [&](Vec2 p) { return slice.locate(p) == cell; }, a, b);
+}
+
+}  // namespace
+
+// The obstacles' slice for one shape at one angle, shared by the robots that have both.
+struct OrderedPlanner::ShapeSlice {
+  ShapeSlice(const Scene& scene, size_t robot)
+      : world(scene, robot),
+        base(world, exact::rationalAngleNear(scene.robots[robot].start.theta, 30)) {}
+  SliceWorld world;
+  Slice base;
+};
+
+OrderedPlanner::OrderedPlanner(const Scene& scene, OrderedSettings settings)
+    : scene_(scene), settings_(settings), checker_(scene) {}
+
+OrderedPlanner::~OrderedPlanner() = default;
+
+// Robots furthest along the mean direction from starts to goals first: those in front of a
+// crowd leave it first and reach the far side of the goals first.
+std::vector<size_t> OrderedPlanner::order() const {
+  const size_t k = scene_.robots.size();
+  Vec2 d{0, 0};
+  for (const Robot& r : scene_.robots) d = d + Vec2{r.goal.x - r.start.x, r.goal.y - r.start.y};
+  std::vector<double> key(k, 0);
+  if (norm(d) > 1e-9 * std::max(scene_.bounds.width(), scene_.bounds.height()))
+    for (size_t i = 0; i < k; ++i) {
+      const Robot& r = scene_.robots[i];
+      key[i] = dot(Vec2{r.start.x + r.goal.x, r.start.y + r.goal.y}, d);
+    }
+  std::vector<size_t> out(k);
+  std::iota(out.begin(), out.end(), 0);
+  std::stable_sort(out.begin(), out.end(), [&](size_t a, size_t b) { return key[a] > key[b]; });
+  return out;
+}
+
+OrderedPlanner::ShapeSlice& OrderedPlanner::sliceOf(size_t robot) {
+  if (shapeOf_[robot] < 0) {
+    const Robot& r = scene_.robots[robot];
+    for (size_t other = 0; other < scene_.robots.size() && shapeOf_[robot] < 0; ++other)
+      if (shapeOf_[other] >= 0 && scene_.robots[other].shape == r.shape &&
+          scene_.robots[other].start.theta == r.start.theta)
+        shapeOf_[robot] = shapeOf_[other];
+    if (shapeOf_[robot] < 0) {
+      const TimeCharge charge(stats_.baseSliceSeconds);
+      slices_.push_back(std::make_unique<ShapeSlice>(scene_, robot));
+      shapeOf_[robot] = long(slices_.size() - 1);
+      ++stats_.baseSlices;
+    }
+  }
+  return *slices_[size_t(shapeOf_[robot])];
+}
+
+// Takes the route for `robot` (the others where they stand) if every motion along it is
+// certified.
+bool OrderedPlanner::take(size_t robot, const std::vector<Vec2>& route) {
+  const TimeCharge charge(stats_.certifySeconds);
+  std::vector<Config> moves;
+  Config at = q_;
+  for (size_t k = 1; k < route.size(); ++k) {
+    Config next = at;
+    next[3 * robot] = route[k].x;
+    next[3 * robot + 1] = route[k].y;
+    if (!motionFree(checker_, at, next)) return false;
+    moves.push_back(next);
+    at = std::move(next);
+  }
+  path_.insert(path_.end(), moves.begin(), moves.end());
+  q_ = at;
+  return true;
+}
+
+// One robot from where it stands to its goal, the others held: the straight motion, the route
+// in the obstacles' slice, an overlay with the robots near it, one with all.
+bool OrderedPlanner::moveAlone(size_t robot, const Termination& stop) {
+  const Robot& r = scene_.robots[robot];
+  if (!sameAngle(q_[3 * robot + 2], r.goal.theta)) return false;  // turns: the joint MMS's
+  const Vec2 from{q_[3 * robot], q_[3 * robot + 1]}, to{r.goal.x, r.goal.y};
+  if (take(robot, {from, to})) return ++stats_.straightMoves, true;
+  ShapeSlice& s = sliceOf(robot);
+  std::optional<std::vector<Vec2>> route;
+  {
+    const TimeCharge charge(stats_.routeSeconds);
+    route = routeIn(s.base, from, to);
+  }
+  if (!route) return false;  // apart among the obstacles alone: no overlay joins them
+  if (take(robot, *route)) return ++stats_.routeMoves, true;
+  // Standing robots near the way are subtracted, the way found then may pass others: those
+  // are added and the overlay made again, a few times, before all of them are.
+  const double reach = (2 + settings_.nearRadii) * checker_.radius(robot);
+  std::vector<bool> held(scene_.robots.size(), false);
+  std::vector<Vec2> way = {from, to};
+  for (size_t attempt = 0; attempt <= kNearAttempts; ++attempt) {
+    if (stop()) return false;
+    const bool all = attempt == kNearAttempts;
+    bool added = false;
+    for (size_t j = 0; j < scene_.robots.size(); ++j)
+      if (j != robot && !held[j] &&
+          (all || distanceToPolyline({q_[3 * j], q_[3 * j + 1]}, way) < reach + checker_.radius(j)))
+        held[j] = added = true;
+    if (!added) continue;  // the same overlay again would find the same way
+    std::vector<MovedShape> shapes;
+    for (size_t j = 0; j < scene_.robots.size(); ++j)
+      if (held[j]) shapes.push_back(heldShape(scene_, j, poseOf(q_, j)));
+    std::optional<std::vector<Vec2>> around;
+    {
+      const TimeCharge charge(stats_.overlaySeconds);
+      ++stats_.overlays;
+      const Slice overlay(s.base, shapes);
+      around = routeIn(overlay, from, to);
+    }
+    if (!around) return false;  // apart among the robots it holds: apart among all
+    if (take(robot, *around)) return ++stats_.overlayMoves, true;
+    way = std::move(*around);
+  }
+  return false;
+}
+
+// `robots` planned together by MMS from where they stand, the others held where they stand
+// (as obstacles) or moving too.
+bool OrderedPlanner::planJointly(std::vector<size_t> robots, bool othersAsObstacles,
+                                 const Termination& stop) {
+  // Among robots held as obstacles the robots left may have no way at all: a few rounds, then
+  // all robots (whose MMS runs to the limit). A budget in rounds keeps the seed's result.
+  const size_t rounds = othersAsObstacles ? kJointRoundsFirst : 0;
+  const TimeCharge charge(stats_.jointSeconds);
+  if (!othersAsObstacles) {
+    robots.resize(scene_.robots.size());
+    std::iota(robots.begin(), robots.end(), 0);
+  }
+  Scene sub = scene_;
+  sub.robots.clear();
+  std::vector<bool> moving(scene_.robots.size(), false);
+  for (size_t i : robots) {
+    moving[i] = true;
+    Robot r = scene_.robots[i];
+    r.start = poseOf(q_, i);
+    sub.robots.push_back(r);
+  }
+  for (size_t j = 0; j < scene_.robots.size(); ++j)
+    if (!moving[j]) sub.obstacles.push_back(placedRing(scene_.robots[j].shape, poseOf(q_, j)));
+  stats_.jointRobots = robots.size();
+  std::vector<Config> w;
+  PlanStatus status = PlanStatus::NotFound;
+  if (robots.size() == 1) {
+    OneRobotSettings s;
+    s.seed = settings_.seed;
+    s.threads = settings_.threads;
+    OneRobotPlanner p(sub, 0, s);
+    const OneRobotResult res = p.solve(sub.robots[0].start, sub.robots[0].goal, stop);
+    status = res.status, w = res.waypoints;
+  } else if (robots.size() == 2) {
+    TwoRobotSettings s;
+    s.seed = settings_.seed;
+    s.threads = settings_.threads;
+    s.maxRounds = rounds;
+    TwoRobotResult res = TwoRobotPlanner(sub, s).solve(stop);
+    status = res.status, w = std::move(res.waypoints);
+  } else {
+    KRobotSettings s;
+    s.seed = settings_.seed;
+    s.threads = settings_.threads;
+    s.maxRounds = rounds;
+    KRobotResult res = KRobotPlanner(sub, s).solve(stop);
+    status = res.status, w = std::move(res.waypoints);
+  }
+  if (status != PlanStatus::Found) return false;
+  for (const Config& sq : w) {
+    Config full = q_;
+    for (size_t m = 0; m < robots.size(); ++m)
+      for (size_t c = 0; c < 3; ++c) full[3 * robots[m] + c] = sq[3 * m + c];
+    path_.push_back(std::move(full));
+  }
+  q_ = path_.back();
+  for (size_t i : robots) atGoal_[i] = true;
+  return true;
+}
+
+OrderedResult OrderedPlanner::solve(const Termination& stop,
+                                    const std::function<void(const OrderedStats&)>& progress) {
+  const Stopwatch clock;
+  OrderedResult result;
+  q_ = startConfig(scene_);
+  path_ = {q_};
+  atGoal_.assign(scene_.robots.size(), false);
+  shapeOf_.assign(scene_.robots.size(), -1);
+  const StopScope scope(stop);
+  try {
+    std::vector<size_t> left = order();
+    for (bool moved = true; moved && !left.empty() && !stop();) {
+      ++stats_.passes;
+      moved = false;
+      std::vector<size_t> still;
+      for (size_t i : left) {
+        if (!stop() && moveAlone(i, stop)) {
+          atGoal_[i] = true, moved = true, ++stats_.moves;
+        } else {
+          still.push_back(i);
+        }
+      }
+      left = std::move(still);
+      stats_.totalSeconds = clock.seconds();
+      if (progress) progress(stats_);
+    }
+    if (!left.empty() && !stop() && !planJointly(left, true, stop) && !stop())
+      planJointly(left, false, stop);
+  } catch (const Stopped&) {
+  }
+  stats_.totalSeconds = clock.seconds();
+  const bool all = std::all_of(atGoal_.begin(), atGoal_.end(), [](bool b) { return b; });
+  if (!all) {
+    result.status = stop.cancelled() ? PlanStatus::Cancelled : PlanStatus::NotFound;
+    result.stats = stats_;
+    return result;
+  }
+  {
+    const TimeCharge charge(stats_.certifySeconds);
+    result.certificate = checkPath(scene_, checker_, path_);
+  }
+  result.status = result.certificate.ok ? PlanStatus::Found : PlanStatus::Uncertified;
+  result.waypoints = std::move(path_);
+  stats_.totalSeconds = clock.seconds();
+  result.stats = stats_;
+  return result;
+}
+
+}  // namespace mms

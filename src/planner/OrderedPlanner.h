@@ -1,0 +1,88 @@
+#pragma once
+// MMS for many robots: robots moved one at a time, in an order, each through its own exact
+// free space while the others stay where they are; the k-robot MMS takes over for robots that
+// block each other.
+//
+// A robot that moves alone among robots that stand still is one robot among obstacles: its
+// free space at its angle is one exact slice (the paper's fixed-angle manifold) of the
+// obstacles, shared by every robot of the same shape, minus the Minkowski sums of the robots
+// that stand (an overlay, planner/Subspace.h's kind). A move tries, cheapest first: the
+// straight motion; the route through the cell of the obstacles' slice (manifolds/CellRoute.h);
+// an overlay of that slice with the standing robots near the route; with all of them. Each is
+// certified with the others held before it is taken, and the whole path again at the end.
+//
+// Order: passes over the robots not yet at their goal, those furthest along the robots' common
+// direction of travel first (a grid going to another grid empties from its front), until a
+// pass moves nobody. The robots left then block each other (or their goals are walled in by
+// robots already there): the k-robot MMS plans them together, the robots at their goals held as
+// obstacles, and failing that all robots from where they stand. This is the revolving-areas
+// order of Agarwal, Geft, Halperin and Taylor (2022) without its step-aside moves: where a
+// robot must make way, the k-robot MMS finds the way. Probabilistic completeness is the
+// k-robot MMS's, run last over all robots from a configuration the ordered moves reached along
+// certified motions (docs/planner.md).
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "check/PathChecker.h"
+#include "geometry/CollisionChecker.h"
+#include "mms/Planner.h"
+#include "mms/Scene.h"
+#include "mms/Termination.h"
+
+namespace mms {
+
+struct OrderedSettings {
+  uint64_t seed = 1;  // for the k-robot MMS of robots that block each other
+  unsigned threads = 1;
+  /// Standing robots this many moving-robot radii from a route (beyond touching) are
+  /// subtracted in the first overlay; all of them in the second.
+  double nearRadii = 3;
+};
+
+struct OrderedStats {
+  size_t passes = 0, moves = 0, straightMoves = 0, routeMoves = 0, overlayMoves = 0;
+  size_t overlays = 0, baseSlices = 0, jointRobots = 0;  // jointRobots: left to the k-robot MMS
+  double baseSliceSeconds = 0, routeSeconds = 0, overlaySeconds = 0, jointSeconds = 0,
+         certifySeconds = 0, totalSeconds = 0;
+  std::string noPath;
+};
+
+struct OrderedResult {
+  PlanStatus status = PlanStatus::NotFound;
+  std::vector<Config> waypoints;  // all robots' (x, y, theta), certified when Found
+  PathCheckResult certificate;
+  OrderedStats stats;
+};
+
+class OrderedPlanner {
+ public:
+  explicit OrderedPlanner(const Scene& scene, OrderedSettings settings = {});
+  ~OrderedPlanner();
+  OrderedPlanner(const OrderedPlanner&) = delete;
+  OrderedPlanner& operator=(const OrderedPlanner&) = delete;
+
+  OrderedResult solve(const Termination& stop,
+                      const std::function<void(const OrderedStats&)>& progress = {});
+
+ private:
+  struct ShapeSlice;
+  std::vector<size_t> order() const;
+  bool moveAlone(size_t robot, const Termination& stop);
+  bool take(size_t robot, const std::vector<Vec2>& route);
+  ShapeSlice& sliceOf(size_t robot);
+  bool planJointly(std::vector<size_t> robots, bool othersAsObstacles, const Termination& stop);
+
+  Scene scene_;
+  OrderedSettings settings_;
+  CollisionChecker checker_;
+  OrderedStats stats_;
+  Config q_;                   // where every robot stands now
+  std::vector<Config> path_;   // from the start to q_
+  std::vector<bool> atGoal_;   // per robot
+  std::vector<long> shapeOf_;  // per robot: its ShapeSlice, -1 until needed
+  std::vector<std::unique_ptr<ShapeSlice>> slices_;
+};
+
+}  // namespace mms

@@ -1,0 +1,143 @@
+// Scenes of many discs, the kind discopygal's users bring: grids going to another grid, and
+// discs among random triangles.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "scenarios/Generators.h"
+
+namespace mms {
+
+namespace {
+
+// A 16-gon whose inscribed circle is the disc (contains it).
+Ring discAround(double radius) {
+  constexpr int kSides = 16;
+  const double R = radius / std::cos(M_PI / kSides);
+  Ring ring;
+  for (int i = 0; i < kSides; ++i) {
+    const double a = 2 * M_PI * i / kSides;
+    ring.push_back({R * std::cos(a), R * std::sin(a)});
+  }
+  return ring;
+}
+
+Robot disc(size_t i, double radius, Vec2 start, Vec2 goal) {
+  Robot r;
+  r.name = "disc-" + std::to_string(i);
+  r.motion = Motion::Translate;
+  r.shape = discAround(radius);
+  r.start = {start.x, start.y, 0};
+  r.goal = {goal.x, goal.y, 0};
+  return r;
+}
+
+Box around(const std::vector<Vec2>& points, double margin) {
+  Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  for (Vec2 p : points) {
+    b.xmin = std::min(b.xmin, p.x), b.ymin = std::min(b.ymin, p.y);
+    b.xmax = std::max(b.xmax, p.x), b.ymax = std::max(b.ymax, p.y);
+  }
+  return {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
+}
+
+}  // namespace
+
+Scene discGridScene(uint64_t seed, size_t count, double spacing) {
+  Random rng(seed);
+  const double r = 1;
+  if (spacing <= 0) spacing = std::array<double, 3>{3, 5, 10}[rng.below(3)];
+  spacing *= r;
+  // A grid of cols x rows (an aspect from the seed), and the same grid moved along one of eight
+  // directions, one to three spacings clear of it; each disc goes to its own place in the other
+  // grid. The grids turn by an angle from the seed.
+  const double aspect = rng.uniform(0.5, 2);
+  const size_t cols = std::max<size_t>(1, size_t(std::ceil(std::sqrt(double(count) * aspect))));
+  const size_t rows = (count + cols - 1) / cols;
+  const int dir = int(rng.below(8));
+  const double gap = spacing * double(1 + rng.below(3));
+  const double w = spacing * double(cols - 1), h = spacing * double(rows - 1);
+  constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1}, kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+  const double dx = kDx[dir], dy = kDy[dir];
+  const Vec2 shift{dx * (w + gap + spacing), dy * (h + gap + spacing)};
+  const double turn = rng.uniform(0, 2 * M_PI), c = std::cos(turn), s = std::sin(turn);
+  auto turned = [&](Vec2 p) { return Vec2{c * p.x - s * p.y, s * p.x + c * p.y}; };
+  Scene scene;
+  scene.name = "disc-grid-";
+  scene.name += std::to_string(count) + "-" + std::to_string(seed);
+  std::vector<Vec2> ends;
+  for (size_t i = 0; i < count; ++i) {
+    const Vec2 at{spacing * double(i % cols), spacing * double(i / cols)};
+    const Vec2 from = turned(at), to = turned(at + shift);
+    scene.robots.push_back(disc(i, r, from, to));
+    ends.push_back(from), ends.push_back(to);
+  }
+  // Room round both grids for a disc to pass: two spacings and a diameter.
+  scene.bounds = around(ends, 2 * spacing + 2 * r);
+  return scene;
+}
+
+Scene discTrianglesScene(uint64_t seed, size_t count) {
+  Random rng(seed);
+  const double r = 1;
+  // Density from the seed: the box holds count discs at 70-150 area per disc; 10-17 triangles
+  // for 20 discs, in proportion for more (30 for 100).
+  const double perDisc = rng.uniform(70, 150);
+  const double half = 0.5 * std::sqrt(perDisc * double(count));
+  const size_t triangles =
+      std::max<size_t>(1, size_t(std::lround(double(count) * rng.uniform(0.25, 0.85))));
+  Scene scene;
+  scene.name = "disc-triangles-";
+  scene.name += std::to_string(count) + "-" + std::to_string(seed);
+  scene.bounds = {-half, -half, half, half};
+  struct Round {
+    Vec2 c;
+    double radius;
+  };
+  std::vector<Round> kept;
+  auto clear = [&](Vec2 c, double radius, double gap) {
+    for (const Round& k : kept)
+      if (norm(c - k.c) < radius + k.radius + gap) return false;
+    return c.x - radius > -half + gap && c.x + radius < half - gap && c.y - radius > -half + gap &&
+           c.y + radius < half - gap;
+  };
+  // Triangles inside circles kept a disc's diameter and more apart: the discs' free space among
+  // them is one piece.
+  for (size_t t = 0, attempts = 0; t < triangles && attempts < 100000; ++attempts) {
+    const double size = rng.uniform(1.5, 4);
+    const Vec2 c{rng.uniform(-half, half), rng.uniform(-half, half)};
+    if (!clear(c, size, 2 * r + 0.2)) continue;
+    const double a = rng.uniform(0, 2 * M_PI);
+    Ring tri;
+    for (int k = 0; k < 3; ++k) {
+      const double b = a + 2 * M_PI * k / 3 + rng.uniform(-0.5, 0.5);
+      tri.push_back({c.x + size * std::cos(b), c.y + size * std::sin(b)});
+    }
+    scene.obstacles.push_back(tri);
+    kept.push_back({c, size});
+    ++t;
+  }
+  // Starts and goals each in a free disc of twice the robot's radius holding no other start or
+  // goal (the revolving areas of Agarwal et al.), so that an order of moves exists.
+  std::vector<Vec2> places;
+  for (size_t i = 0; i < 2 * count; ++i) {
+    bool placed = false;
+    for (int attempt = 0; attempt < 100000 && !placed; ++attempt) {
+      const Vec2 c{rng.uniform(-half, half), rng.uniform(-half, half)};
+      if (!clear(c, 2 * r, 0.05)) continue;
+      bool apart = true;
+      for (Vec2 p : places) apart = apart && norm(p - c) >= 4 * r + 0.05;
+      if (!apart) continue;
+      places.push_back(c);
+      placed = true;
+    }
+    if (!placed) throw std::logic_error("disc-triangles: no room for the discs");
+  }
+  for (size_t i = 0; i < count; ++i)
+    scene.robots.push_back(disc(i, r, places[2 * i], places[2 * i + 1]));
+  return scene;
+}
+
+}  // namespace mms

@@ -1,0 +1,96 @@
+// MMS for many robots, one at a time: grids and discs among triangles solved with certified
+// paths that reach every goal, robots that block each other left to the k-robot MMS, the same
+// path for the same seed, and the generators of those scenes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "Support.h"
+#include "check/PathChecker.h"
+#include "io/SceneIO.h"
+#include "mms/Errors.h"
+#include "planner/OrderedPlanner.h"
+#include "scenarios/Catalog.h"
+#include "scenarios/Generators.h"
+
+using namespace mms;
+using namespace mms::test;
+
+namespace {
+
+OrderedResult plan(const Scene& s, uint64_t seed = 1) {
+  OrderedSettings st;
+  st.seed = seed;
+  return OrderedPlanner(s, st).solve(Termination(planSeconds(60)));
+}
+
+// Found, every waypoint of the path placing each robot somewhere free (all pairs, no sweep),
+// certified by a checker of its own, from the start to the goal.
+void expectSolved(const Scene& s, const OrderedResult& r) {
+  ASSERT_EQ(r.status, PlanStatus::Found) << s.name;
+  ASSERT_FALSE(r.waypoints.empty());
+  EXPECT_EQ(r.waypoints.front(), startConfig(s)) << s.name;
+  EXPECT_EQ(r.waypoints.back(), goalConfig(s)) << s.name;
+  const CollisionChecker checker(s);
+  EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok) << s.name;
+  for (const Config& q : r.waypoints)
+    for (size_t i = 0; i < s.robots.size(); ++i)
+      for (size_t j = i + 1; j < s.robots.size(); ++j)
+        ASSERT_TRUE(checker.robotsDisjoint(i, poseOf(q, i), j, poseOf(q, j))) << s.name;
+}
+
+}  // namespace
+
+TEST(Ordered, DenseAndSparseGridsGoToTheirOtherGrid) {
+  for (uint64_t seed = 1; seed <= size_t(seedsToRun(3)); ++seed)
+    for (double spacing : {3.0, 10.0}) {
+      const Scene s = discGridScene(seed, 30, spacing);
+      ASSERT_EQ(s.robots.size(), 30u);
+      expectSolved(s, plan(s));
+    }
+}
+
+TEST(Ordered, DiscsAmongTrianglesAreSolvedOneAtATime) {
+  for (uint64_t seed = 1; seed <= size_t(seedsToRun(3)); ++seed) {
+    const Scene s = discTrianglesScene(seed, 20);
+    const OrderedResult r = plan(s);
+    expectSolved(s, r);
+    EXPECT_EQ(r.stats.moves, 20u) << "every disc on its own: no joint planning needed";
+    EXPECT_EQ(r.stats.jointRobots, 0u);
+  }
+}
+
+// Discs round a block each go to the next one's place: nobody can go first, and the k-robot MMS
+// plans them together.
+TEST(Ordered, RobotsThatBlockEachOtherArePlannedTogether) {
+  const Scene s = discsSwapScene(1);
+  const OrderedResult r = plan(s);
+  expectSolved(s, r);
+  EXPECT_EQ(r.stats.jointRobots, s.robots.size());
+}
+
+TEST(Ordered, SameSeedSamePath) {
+  const Scene s = discTrianglesScene(4, 20);
+  const OrderedResult a = plan(s, 3), b = plan(s, 3);
+  ASSERT_EQ(a.status, PlanStatus::Found);
+  EXPECT_EQ(a.waypoints, b.waypoints);
+}
+
+TEST(ManyDiscScenes, SameSeedSameSceneValidAndSized) {
+  for (const char* name : {"disc-grid", "disc-triangles"})
+    for (int robots : {1, 20, 100}) {
+      ScenarioRequest r;
+      r.name = name;
+      r.seed = 7;
+      r.robots = robots;
+      const Scene a = makeScenario(r), b = makeScenario(r);  // makeScenario validates them
+      EXPECT_EQ(a.robots.size(), size_t(robots)) << name;
+      EXPECT_EQ(sceneToJson(a), sceneToJson(b)) << name;
+      r.seed = 8;
+      EXPECT_NE(sceneToJson(makeScenario(r)), sceneToJson(a)) << name;
+    }
+  ScenarioRequest bad;
+  bad.name = "disc-grid";
+  bad.spacing = 1.5;  // discs would overlap
+  EXPECT_THROW(makeScenario(bad, "--"), InputError);
+}
