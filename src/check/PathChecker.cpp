@@ -1,5 +1,6 @@
 #include "check/PathChecker.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -42,6 +43,7 @@ class StraightMotion {
     b_ = &b;
     k_ = checker.robotCount();
     rate_.assign(k_, 0.0);
+    moving_.clear();
     radii_.resize(k_);
     for (size_t i = 0; i < k_; ++i) radii_[i] = checker.radius(i);
     translation_ = rotation_ = maxRate_ = 0;
@@ -52,6 +54,7 @@ class StraightMotion {
       translation_ += dp;
       rotation_ += dt;
       rate_[i] = dp + checker.radius(i) * dt;
+      if (rate_[i] > 0) moving_.push_back(i);
       maxRate_ = std::max(maxRate_, rate_[i]);
       if (rate_[i] > 0) minRate_ = std::min(minRate_, rate_[i]);
     }
@@ -102,6 +105,22 @@ class StraightMotion {
       const Pose p = pose(i, s);
       centres_[i] = {p.x, p.y};
     }
+    if (movingOnly && moving_.size() * 8 < k_) {
+      // A few robots move (one at a time, as many-robot planners move them): each against all,
+      // which costs less than sorting them all per evaluation.
+      near_.clear();
+      for (size_t i : moving_)
+        for (size_t j = 0; j < k_; ++j) {
+          if (j == i || (rate_[j] > 0 && j < i)) continue;  // a pair of movers once
+          const size_t a = std::min(i, j), b = std::max(i, j);
+          const double gap = norm(centres_[a] - centres_[b]) - radii_[a] - radii_[b];
+          if (gap < cutoff(half * (rate_[a] + rate_[b]))) near_.emplace_back(a, b);
+        }
+      std::sort(near_.begin(), near_.end());
+      for (const auto& [i, j] : near_)
+        if (!pair(i, j)) return;
+      return;
+    }
     const double reach = cutoff(2 * half * maxRate_);
     const auto& near = sweep_.near(centres_, radii_, reach, [&](size_t i, size_t j, double gap) {
       return counts(i, j) && gap < cutoff(half * (rate_[i] + rate_[j]));
@@ -121,7 +140,9 @@ class StraightMotion {
   const Config *a_ = nullptr, *b_ = nullptr;
   size_t k_ = 0;
   std::vector<double> rate_, radii_;
+  std::vector<size_t> moving_;         // robots whose rate is positive
   mutable std::vector<Vec2> centres_;  // scratch of the broad phase, kept between evaluations
+  mutable std::vector<DiscSweep::Pair> near_;
   mutable DiscSweep sweep_;
   double translation_ = 0, rotation_ = 0, maxRate_ = 0, minRate_ = kInf;
 };

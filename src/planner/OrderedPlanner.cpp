@@ -19,20 +19,18 @@ namespace mms {
 namespace {
 
 constexpr size_t kJointRoundsFirst = 4;
+// Shape names of the walls round a region: past every robot's index.
+constexpr size_t kWallShapes = size_t(1) << 40;
 
 bool sameAngle(double a, double b) { return std::fabs(std::remainder(a - b, 2 * M_PI)) < 1e-12; }
 
-constexpr size_t kNearAttempts = 3;
-
-double distanceToPolyline(Vec2 p, const std::vector<Vec2>& line) {
-  double best = norm(p - line[0]);
-  for (size_t k = 1; k < line.size(); ++k) {
-    const Vec2 a = line[k - 1], d = line[k] - a;
-    const double len2 = dot(d, d);
-    const double t = len2 > 0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, norm(p - (a + t * d)));
+Box routeBox(const std::vector<Vec2>& route) {
+  Box b{route[0].x, route[0].y, route[0].x, route[0].y};
+  for (Vec2 p : route) {
+    b.xmin = std::min(b.xmin, p.x), b.ymin = std::min(b.ymin, p.y);
+    b.xmax = std::max(b.xmax, p.x), b.ymax = std::max(b.ymax, p.y);
   }
-  return best;
+  return b;
 }
 
 // The route from a to b inside one cell of `slice`, if both lie in the same cell.
@@ -75,6 +73,26 @@ std::vector<size_t> OrderedPlanner::order() const {
   std::iota(out.begin(), out.end(), 0);
   std::stable_sort(out.begin(), out.end(), [&](size_t a, size_t b) { return key[a] > key[b]; });
   return out;
+}
+
+// Four walls round `region`, out to the bounds and past them, as obstacles of an overlay. Each
+// wall is a shape of its own: its Minkowski sum must not be taken for another's.
+std::vector<MovedShape> OrderedPlanner::walls(const Box& region) {
+  const Box& b = scene_.bounds;
+  const double pad = std::max(b.width(), b.height());
+  const Box out{b.xmin - pad, b.ymin - pad, b.xmax + pad, b.ymax + pad};
+  std::vector<MovedShape> w;
+  for (const Box& r : {Box{out.xmin, out.ymin, region.xmin, out.ymax},
+                       Box{region.xmax, out.ymin, out.xmax, out.ymax},
+                       Box{region.xmin, out.ymin, region.xmax, region.ymin},
+                       Box{region.xmin, region.ymax, region.xmax, out.ymax}}) {
+    if (r.xmin >= r.xmax || r.ymin >= r.ymax) continue;
+    MovedShape m;
+    m.shape = kWallShapes + wallsMade_++;
+    m.turned = {{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}};
+    w.push_back(std::move(m));
+  }
+  return w;
 }
 
 OrderedPlanner::ShapeSlice& OrderedPlanner::sliceOf(size_t robot) {
@@ -128,23 +146,24 @@ bool OrderedPlanner::moveAlone(size_t robot, const Termination& stop) {
   }
   if (!route) return false;  // apart among the obstacles alone: no overlay joins them
   if (take(robot, *route)) return ++stats_.routeMoves, true;
-  // Standing robots near the way are subtracted, the way found then may pass others: those
-  // are added and the overlay made again, a few times, before all of them are.
-  const double reach = (2 + settings_.nearRadii) * checker_.radius(robot);
-  std::vector<bool> held(scene_.robots.size(), false);
-  std::vector<Vec2> way = {from, to};
-  for (size_t attempt = 0; attempt <= kNearAttempts; ++attempt) {
+  // The way is looked for in a region round the obstacles' route, walled off: only the robots
+  // standing in it are subtracted. A region whose cell does not join start and goal is grown,
+  // up to the bounds (where the walls are gone and every standing robot counts).
+  const Box all = scene_.bounds;
+  double margin = settings_.nearRadii * 2 * checker_.radius(robot);
+  for (;; margin *= 2) {
     if (stop()) return false;
-    const bool all = attempt == kNearAttempts;
-    bool added = false;
-    for (size_t j = 0; j < scene_.robots.size(); ++j)
-      if (j != robot && !held[j] &&
-          (all || distanceToPolyline({q_[3 * j], q_[3 * j + 1]}, way) < reach + checker_.radius(j)))
-        held[j] = added = true;
-    if (!added) continue;  // the same overlay again would find the same way
-    std::vector<MovedShape> shapes;
-    for (size_t j = 0; j < scene_.robots.size(); ++j)
-      if (held[j]) shapes.push_back(heldShape(scene_, j, poseOf(q_, j)));
+    Box region = routeBox(*route);
+    region = {std::max(all.xmin, region.xmin - margin), std::max(all.ymin, region.ymin - margin),
+              std::min(all.xmax, region.xmax + margin), std::min(all.ymax, region.ymax + margin)};
+    const bool whole = region.xmin == all.xmin && region.ymin == all.ymin &&
+                       region.xmax == all.xmax && region.ymax == all.ymax;
+    std::vector<MovedShape> shapes = walls(region);
+    for (size_t j = 0; j < scene_.robots.size(); ++j) {
+      const double rj = checker_.radius(j);
+      const Box b{q_[3 * j] - rj, q_[3 * j + 1] - rj, q_[3 * j] + rj, q_[3 * j + 1] + rj};
+      if (j != robot && b.overlaps(region)) shapes.push_back(heldShape(scene_, j, poseOf(q_, j)));
+    }
     std::optional<std::vector<Vec2>> around;
     {
       const TimeCharge charge(stats_.overlaySeconds);
@@ -152,9 +171,8 @@ bool OrderedPlanner::moveAlone(size_t robot, const Termination& stop) {
       const Slice overlay(s.base, shapes);
       around = routeIn(overlay, from, to);
     }
-    if (!around) return false;  // apart among the robots it holds: apart among all
-    if (take(robot, *around)) return ++stats_.overlayMoves, true;
-    way = std::move(*around);
+    if (around && take(robot, *around)) return ++stats_.overlayMoves, true;
+    if (whole) break;
   }
   return false;
 }
