@@ -35,7 +35,10 @@ PathCheckResult checkMotion(const Scene& scene, const CollisionChecker& checker,
 
 /// Whether the straight motion from a to b is certified free: the test of checkMotion for one
 /// segment, without its report, refusing at the first evaluation that fails.
-bool motionFree(const CollisionChecker& checker, const Config& a, const Config& b);
+/// `stillOnesFree`: the robots that stay put are known to be free of the obstacles and of each
+/// other (a is a certified configuration), so only the moving ones are tested.
+bool motionFree(const CollisionChecker& checker, const Config& a, const Config& b,
+                bool stillOnesFree = false);
 
 /// How far the straight motion from a to b is certified free, as a fraction of it: 1 when all
 /// of it is; else a point of its certified beginning, as far as the certifier's pieces find,

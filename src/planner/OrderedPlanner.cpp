@@ -19,8 +19,6 @@ namespace mms {
 namespace {
 
 constexpr size_t kJointRoundsFirst = 4;
-// Shape names of the walls round a region: past every robot's index.
-constexpr size_t kWallShapes = size_t(1) << 40;
 
 bool sameAngle(double a, double b) { return std::fabs(std::remainder(a - b, 2 * M_PI)) < 1e-12; }
 
@@ -53,7 +51,9 @@ struct OrderedPlanner::ShapeSlice {
 };
 
 OrderedPlanner::OrderedPlanner(const Scene& scene, OrderedSettings settings)
-    : scene_(scene), settings_(settings), checker_(scene) {}
+    : scene_(scene), settings_(settings), checker_(scene) {
+  for (const Ring& o : scene_.obstacles) obstacleBoxes_.push_back(boundingBox(o));
+}
 
 OrderedPlanner::~OrderedPlanner() = default;
 
@@ -75,24 +75,21 @@ std::vector<size_t> OrderedPlanner::order() const {
   return out;
 }
 
-// Four walls round `region`, out to the bounds and past them, as obstacles of an overlay. Each
-// wall is a shape of its own: its Minkowski sum must not be taken for another's.
-std::vector<MovedShape> OrderedPlanner::walls(const Box& region) {
-  const Box& b = scene_.bounds;
-  const double pad = std::max(b.width(), b.height());
-  const Box out{b.xmin - pad, b.ymin - pad, b.xmax + pad, b.ymax + pad};
-  std::vector<MovedShape> w;
-  for (const Box& r : {Box{out.xmin, out.ymin, region.xmin, out.ymax},
-                       Box{region.xmax, out.ymin, out.xmax, out.ymax},
-                       Box{region.xmin, out.ymin, region.xmax, region.ymin},
-                       Box{region.xmin, region.ymax, region.xmax, out.ymax}}) {
-    if (r.xmin >= r.xmax || r.ymin >= r.ymax) continue;
-    MovedShape m;
-    m.shape = kWallShapes + wallsMade_++;
-    m.turned = {{r.xmin, r.ymin}, {r.xmax, r.ymin}, {r.xmax, r.ymax}, {r.xmin, r.ymax}};
-    w.push_back(std::move(m));
+// The region as a scene of its own: the obstacles and the standing robots that reach into it
+// (as obstacles where they stand), and the moving robot.
+Scene OrderedPlanner::regionScene(size_t robot, const Box& region) const {
+  Scene local;
+  local.bounds = region;
+  for (size_t o = 0; o < scene_.obstacles.size(); ++o)
+    if (obstacleBoxes_[o].overlaps(region)) local.obstacles.push_back(scene_.obstacles[o]);
+  for (size_t j = 0; j < scene_.robots.size(); ++j) {
+    const double rj = checker_.radius(j) + checker_.tolerance();
+    const Box b{q_[3 * j] - rj, q_[3 * j + 1] - rj, q_[3 * j] + rj, q_[3 * j + 1] + rj};
+    if (j != robot && b.overlaps(region))
+      local.obstacles.push_back(placedRing(scene_.robots[j].shape, poseOf(q_, j)));
   }
-  return w;
+  local.robots = {scene_.robots[robot]};
+  return local;
 }
 
 OrderedPlanner::ShapeSlice& OrderedPlanner::sliceOf(size_t robot) {
@@ -122,7 +119,8 @@ bool OrderedPlanner::take(size_t robot, const std::vector<Vec2>& route) {
     Config next = at;
     next[3 * robot] = route[k].x;
     next[3 * robot + 1] = route[k].y;
-    if (!motionFree(checker_, at, next)) return false;
+    // Where the others stand was certified with the moves before: only this robot is tested.
+    if (!motionFree(checker_, at, next, /*stillOnesFree=*/true)) return false;
     moves.push_back(next);
     at = std::move(next);
   }
@@ -146,10 +144,10 @@ bool OrderedPlanner::moveAlone(size_t robot, const Termination& stop) {
   }
   if (!route) return false;  // apart among the obstacles alone: no overlay joins them
   if (take(robot, *route)) return ++stats_.routeMoves, true;
-  // The way is looked for in a region round the obstacles' route, walled off: only the robots
-  // standing in it are subtracted. A region whose cell does not join start and goal is grown,
-  // up to the bounds (where the walls are gone and every standing robot counts).
-  const Box all = scene_.bounds;
+  // The way is looked for in a region round the obstacles' route: a slice of that region alone,
+  // among the obstacles and the robots standing in it, costs what the region holds whatever the
+  // scene's size. A region whose cell does not join start and goal is grown, up to the bounds.
+  const Box& all = scene_.bounds;
   double margin = settings_.nearRadii * 2 * checker_.radius(robot);
   for (;; margin *= 2) {
     if (stop()) return false;
@@ -158,18 +156,14 @@ bool OrderedPlanner::moveAlone(size_t robot, const Termination& stop) {
               std::min(all.xmax, region.xmax + margin), std::min(all.ymax, region.ymax + margin)};
     const bool whole = region.xmin == all.xmin && region.ymin == all.ymin &&
                        region.xmax == all.xmax && region.ymax == all.ymax;
-    std::vector<MovedShape> shapes = walls(region);
-    for (size_t j = 0; j < scene_.robots.size(); ++j) {
-      const double rj = checker_.radius(j);
-      const Box b{q_[3 * j] - rj, q_[3 * j + 1] - rj, q_[3 * j] + rj, q_[3 * j + 1] + rj};
-      if (j != robot && b.overlaps(region)) shapes.push_back(heldShape(scene_, j, poseOf(q_, j)));
-    }
     std::optional<std::vector<Vec2>> around;
     {
       const TimeCharge charge(stats_.overlaySeconds);
       ++stats_.overlays;
-      const Slice overlay(s.base, shapes);
-      around = routeIn(overlay, from, to);
+      const Scene local = regionScene(robot, region);
+      const SliceWorld world(local, 0);
+      const Slice slice(world, exact::rationalAngleNear(r.start.theta, 30));
+      around = routeIn(slice, from, to);
     }
     if (around && take(robot, *around)) return ++stats_.overlayMoves, true;
     if (whole) break;

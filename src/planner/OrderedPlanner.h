@@ -72,7 +72,7 @@ class OrderedPlanner {
   bool moveAlone(size_t robot, const Termination& stop);
   bool take(size_t robot, const std::vector<Vec2>& route);
   ShapeSlice& sliceOf(size_t robot);
-  std::vector<struct MovedShape> walls(const Box& region);
+  Scene regionScene(size_t robot, const Box& region) const;
   bool planJointly(std::vector<size_t> robots, bool othersAsObstacles, const Termination& stop);
 
   Scene scene_;
@@ -84,7 +84,7 @@ class OrderedPlanner {
   std::vector<bool> atGoal_;   // per robot
   std::vector<long> shapeOf_;  // per robot: its ShapeSlice, -1 until needed
   std::vector<std::unique_ptr<ShapeSlice>> slices_;
-  size_t wallsMade_ = 0;
+  std::vector<Box> obstacleBoxes_;
 };
 
 }  // namespace mms

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "check/PathChecker.h"
@@ -152,6 +153,52 @@ TEST(BroadPhase, CertifierAmongManyRobotsAgreesWithDenseSamplingOfAllPairs) {
   }
   EXPECT_GT(accepted, 3u);
   EXPECT_GT(refused, 3u);
+}
+
+}  // namespace
+}  // namespace mms
+
+namespace mms {
+namespace {
+
+// The certifier checks robots that stay put once, where a segment does not start where the last
+// one ended: a path of one-at-a-time moves gets the answer and smallest clearance of its
+// segments certified one by one (each with that check).
+TEST(BroadPhase, APathCertifiesAsItsSegmentsDoOneByOne) {
+  size_t refused = 0;
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    const Scene s = crowd(30, seed, 70);
+    const CollisionChecker c(s);
+    Random rng(seed * 5);
+    Config q = randomConfig(s, rng);
+    for (int attempt = 0; attempt < 200 && !c.isFree(q); ++attempt) q = randomConfig(s, rng);
+    if (!c.isFree(q)) continue;
+    std::vector<Config> path{q};
+    for (int m = 0; m < 12; ++m) {
+      Config next = path.back();
+      const size_t r = rng.below(s.robots.size());
+      next[3 * r] += rng.uniform(-6, 6);
+      next[3 * r + 1] += rng.uniform(-6, 6);
+      path.push_back(next);
+    }
+    const PathCheckResult whole = checkMotion(s, c, path);
+    bool ok = true;
+    double least = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k + 1 < path.size() && ok; ++k) {
+      const PathCheckResult one = checkMotion(s, c, {path[k], path[k + 1]});
+      ok = one.ok;
+      least = std::min(least, one.minClearance);
+      if (!ok) {
+        EXPECT_EQ(whole.segment, k) << "seed " << seed;
+      }
+    }
+    EXPECT_EQ(whole.ok, ok) << "seed " << seed;
+    if (ok) {
+      EXPECT_DOUBLE_EQ(whole.minClearance, least) << "seed " << seed;
+    }
+    refused += !ok;
+  }
+  EXPECT_GT(refused, 0u);
 }
 
 }  // namespace
