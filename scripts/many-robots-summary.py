@@ -1,0 +1,63 @@
+#!/usr/bin/env python3
+"""The many-robot tables from `mms bench` results (scripts/bench-many-robots.sh).
+
+Usage: many-robots-summary.py RESULTS_CSV TIME_LIMIT [SWEEP_RESULTS_CSV]
+
+Scenes are grouped into families by their name without the trailing "-SEED". Per family and
+planner: the median time to the first certified path over the seeds (a failure counts as the
+limit), the seeds solved and the median peak memory. The sweep's table: per family and number
+of robots, MMS's median time and memory.
+"""
+import csv
+import re
+import statistics
+import sys
+from collections import defaultdict
+
+
+def read(path, limit):
+    rows = defaultdict(list)  # (family, planner) -> [(seconds or limit, solved, memory MB)]
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            family = re.sub(r"-\d+$", "", row["scene"])
+            ok = row["status"] == "found"
+            seconds = min(float(row["seconds"]), limit) if ok else limit
+            memory = float(row["peak_memory_mb"] or 0)
+            rows[(family, row["planner"])].append((seconds, ok, memory))
+    return rows
+
+
+def cell(runs, limit):
+    m = statistics.median(r[0] for r in runs)
+    solved = sum(1 for r in runs if r[1])
+    memory = statistics.median(r[2] for r in runs)
+    text = f"> {limit:g}" if m >= limit else f"{m:.3g} s"
+    return f"{text} ({solved}/{len(runs)}, {memory:.0f} MB)"
+
+
+def main():
+    path, limit = sys.argv[1], float(sys.argv[2])
+    rows = read(path, limit)
+    families = sorted({f for f, _ in rows}, key=lambda f: (int(re.search(r"-(\d+)", f).group(1)), f))
+    planners = sorted({p for _, p in rows}, key=lambda p: (not p.startswith("mms"), p))
+    print("| family | " + " | ".join(planners) + " |")
+    print("|---|" + "---|" * len(planners))
+    for family in families:
+        print(f"| {family} | " + " | ".join(
+            cell(rows[(family, p)], limit) if (family, p) in rows else "–" for p in planners) + " |")
+    if len(sys.argv) > 3:
+        sweep = read(sys.argv[3], 60)
+        print()
+        print("| family | robots | MMS: median time (solved) | peak memory (median) |")
+        print("|---|---|---|---|")
+        keys = sorted(sweep, key=lambda k: (re.sub(r"-\d+.*", "", k[0]), int(re.search(r"-(\d+)", k[0]).group(1))))
+        for family, planner in keys:
+            runs = sweep[(family, planner)]
+            m = statistics.median(r[0] for r in runs)
+            n = int(re.search(r"-(\d+)", family).group(1))
+            print(f"| {re.sub(r'-[0-9].*', '', family)} | {n} | {m:.3g} s ({sum(r[1] for r in runs)}/{len(runs)}) "
+                  f"| {statistics.median(r[2] for r in runs):.0f} MB |")
+
+
+if __name__ == "__main__":
+    main()
