@@ -20,6 +20,7 @@ nlohmann::json RunRecord::toJson() const {
   return {{"scene", scene},
           {"scene_file", sceneFile},
           {"tightness", tightness},
+          {"robots", robots},
           {"planner", planner},
           {"parameters", parameters},
           {"seed", seed},
@@ -46,6 +47,7 @@ RunRecord RunRecord::fromJson(const nlohmann::json& j) {
   r.scene = j.at("scene");
   r.sceneFile = j.value("scene_file", "");
   r.tightness = j.value("tightness", -1.0);
+  r.robots = j.value("robots", size_t(0));
   r.planner = j.at("planner");
   r.parameters = j.value("parameters", "");
   r.seed = j.at("seed");
@@ -504,6 +506,59 @@ std::string tightnessPlot(const std::vector<Summary>& summaries, const std::stri
     series.push_back(std::move(solved));
     series.push_back(std::move(failed));
   }
+  return linePlot(spec, series);
+}
+
+namespace {
+// "disc-grid-500-101" with 500 robots: "disc-grid" (the seed, then the count, dropped).
+std::string familyOf(const RunRecord& r) {
+  std::string name = r.scene;
+  auto dropNumber = [&](const std::string& number) {
+    const size_t dash = name.rfind('-');
+    if (dash == std::string::npos || dash + 1 >= name.size()) return;
+    const std::string tail = name.substr(dash + 1);
+    const bool digits =
+        std::all_of(tail.begin(), tail.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (digits && (number.empty() || tail == number)) name.erase(dash);
+  };
+  dropNumber("");
+  dropNumber(std::to_string(r.robots));
+  return name;
+}
+}  // namespace
+
+std::string robotsPlot(const std::vector<RunRecord>& runs, bool memory) {
+  // (family, planner) -> robots -> the solved runs' values
+  std::map<std::pair<std::string, std::string>, std::map<size_t, std::vector<double>>> values;
+  std::map<std::string, std::set<size_t>> counts;
+  for (const RunRecord& r : runs) {
+    if (r.robots == 0) continue;
+    counts[familyOf(r)].insert(r.robots);
+    if (r.solved())
+      values[{familyOf(r), r.planner}][r.robots].push_back(memory ? r.peakMemoryMb : r.seconds);
+  }
+  std::vector<Series> series;
+  for (const auto& [key, byCount] : values) {
+    if (counts[key.first].size() < 2) continue;
+    Series s{key.first + " (" + key.second + ")", seriesColour(series.size()), {}};
+    for (auto [robots, v] : byCount) {
+      std::sort(v.begin(), v.end());
+      const double median =
+          v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+      s.points.push_back({double(robots), median});
+      s.labels.push_back(std::to_string(v.size()) + " solved");
+    }
+    series.push_back(std::move(s));
+  }
+  if (series.empty()) return "";
+  PlotSpec spec;
+  spec.title = memory ? "Peak memory against the number of robots"
+                      : "Planning time against the number of robots";
+  spec.xLabel = "robots (log scale)";
+  spec.yLabel = memory ? "peak memory [MB] (median of solved runs, log scale)"
+                       : "time to the first certified path [s] (median of solved runs, log scale)";
+  spec.logX = spec.logY = true;
+  spec.width = 760;
   return linePlot(spec, series);
 }
 

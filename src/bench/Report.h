@@ -12,6 +12,7 @@ struct RunRecord {
   std::string scene;  // scene name (from the file)
   std::string sceneFile;
   double tightness = -1;  // for swept scenes (Pacman), else -1
+  size_t robots = 0;      // in the scene (0 in records of older versions)
   std::string planner;
   std::string parameters;  // as given to mms plan, e.g. "--k 10"
   uint64_t seed = 0;
@@ -75,6 +76,11 @@ std::vector<std::pair<std::string, std::string>> omplLogs(const std::vector<RunR
 /// SVG plot of mean planning time (log scale) against tightness with one-stdev error bars per
 /// planner; unsolved runs are drawn as such at the top.
 std::string tightnessPlot(const std::vector<Summary>& summaries, const std::string& title);
+
+/// SVG plot of the median planning time (`memory`: the median peak memory) of solved runs against
+/// the number of robots, per scene family (the scene's name without its seed and robot count)
+/// and planner; "" unless some family has scenes of two robot counts or more.
+std::string robotsPlot(const std::vector<RunRecord>& runs, bool memory);
 
 /// "2026-11-27 07:30:00 UTC" for seconds since the epoch (a run's start); "unknown" for none.
 std::string dateText(double epochSeconds);

@@ -193,6 +193,14 @@ void writeBenchReports(const std::string& dir) {
   md += markdownReport(fixed, "");
   writeFileAtomically(dir + "/times.svg", timesPlot(unique));
   writeFileAtomically(dir + "/success.svg", successPlot(summaries));
+  const std::string byRobots = robotsPlot(unique, false);
+  if (!byRobots.empty()) {
+    md +=
+        "\n## Against the number of robots\n\n![time against robots](robots.svg)\n\n"
+        "![memory against robots](robots-memory.svg)\n";
+    writeFileAtomically(dir + "/robots.svg", byRobots);
+    writeFileAtomically(dir + "/robots-memory.svg", robotsPlot(unique, true));
+  }
   if (!swept.empty()) {
     md += "\n## Tightness sweep\n\n" + markdownReport(swept, "") +
           "\n![time vs tightness](tightness.svg)\n";
@@ -221,6 +229,7 @@ namespace {
 struct SceneEntry {
   std::string file, name;
   double tightness;  // a swept Pacman's; -1 for a scene file
+  size_t robots = 0;
 };
 
 // Scenes: the files given, plus generated Pacman scenes for a tightness sweep.
@@ -228,7 +237,8 @@ std::vector<SceneEntry> benchScenes(const BenchSettings& a) {
   std::vector<SceneEntry> scenes;
   for (const std::string& f : a.scenes) {
     ImportNotes notes;
-    scenes.push_back({f, loadAnyScene(f, notes).name, -1});
+    const Scene scene = loadAnyScene(f, notes);
+    scenes.push_back({f, scene.name, -1, scene.robots.size()});
   }
   if (!a.sweepPacman.empty()) {
     fs::create_directories(a.output + "/scenes");
@@ -244,7 +254,7 @@ std::vector<SceneEntry> benchScenes(const BenchSettings& a) {
       const Scene s = pacmanScene(tight);
       const std::string file = a.output + "/scenes/" + s.name + ".json";
       saveScene(s, file);
-      scenes.push_back({file, s.name, tight});
+      scenes.push_back({file, s.name, tight, s.robots.size()});
     }
   }
   for (SceneEntry& s : scenes)
@@ -281,6 +291,7 @@ std::vector<Job> planJobs(const BenchSettings& a) {
         j.record.scene = s.name;
         j.record.sceneFile = s.file;
         j.record.tightness = s.tightness;
+        j.record.robots = s.robots;
         j.record.planner = planner;
         j.record.parameters = params.count(planner) ? params[planner] : "";
         j.record.seed = seed;

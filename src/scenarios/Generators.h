@@ -147,7 +147,8 @@ Scene assemblyTwoScene(double slack, bool mPartsOnly = false);
 Scene discGridScene(uint64_t seed, size_t count, double spacing = 0);
 
 /// `count` unit discs among random triangles (a quarter to 0.85 of `count`, kept a diameter
-/// apart so the free space is one piece), in a square of 70-150 area per disc; every start and
+/// apart so the free space is one piece), in a square of 70-150 area per disc (more where the
+/// draws do not fit); every start and
 /// goal in a free disc of radius 2 holding no other start or goal (revolving areas), so that
 /// the discs can go one at a time.
 Scene discTrianglesScene(uint64_t seed, size_t count);

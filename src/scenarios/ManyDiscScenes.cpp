@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 #include "scenarios/Generators.h"
@@ -79,23 +78,18 @@ Scene discGridScene(uint64_t seed, size_t count, double spacing) {
   return scene;
 }
 
-Scene discTrianglesScene(uint64_t seed, size_t count) {
-  Random rng(seed);
+namespace {
+
+struct Round {
+  Vec2 c;
+  double radius;
+};
+
+// Triangles and the starts and goals in a square of side 2 half, or nothing when a start or goal
+// finds no room (the caller tries a larger square).
+bool placeDiscsAmongTriangles(Random& rng, size_t count, size_t triangles, double half,
+                              Scene& scene, std::vector<Vec2>& places) {
   const double r = 1;
-  // Density from the seed: the box holds count discs at 70-150 area per disc; 10-17 triangles
-  // for 20 discs, in proportion for more (30 for 100).
-  const double perDisc = rng.uniform(70, 150);
-  const double half = 0.5 * std::sqrt(perDisc * double(count));
-  const size_t triangles =
-      std::max<size_t>(1, size_t(std::lround(double(count) * rng.uniform(0.25, 0.85))));
-  Scene scene;
-  scene.name = "disc-triangles-";
-  scene.name += std::to_string(count) + "-" + std::to_string(seed);
-  scene.bounds = {-half, -half, half, half};
-  struct Round {
-    Vec2 c;
-    double radius;
-  };
   std::vector<Round> kept;
   auto clear = [&](Vec2 c, double radius, double gap) {
     for (const Round& k : kept)
@@ -121,10 +115,9 @@ Scene discTrianglesScene(uint64_t seed, size_t count) {
   }
   // Starts and goals each in a free disc of twice the robot's radius holding no other start or
   // goal (the revolving areas of Agarwal et al.), so that an order of moves exists.
-  std::vector<Vec2> places;
   for (size_t i = 0; i < 2 * count; ++i) {
     bool placed = false;
-    for (int attempt = 0; attempt < 100000 && !placed; ++attempt) {
+    for (int attempt = 0; attempt < 20000 && !placed; ++attempt) {
       const Vec2 c{rng.uniform(-half, half), rng.uniform(-half, half)};
       if (!clear(c, 2 * r, 0.05)) continue;
       bool apart = true;
@@ -133,11 +126,33 @@ Scene discTrianglesScene(uint64_t seed, size_t count) {
       places.push_back(c);
       placed = true;
     }
-    if (!placed) throw std::logic_error("disc-triangles: no room for the discs");
+    if (!placed) return false;
   }
-  for (size_t i = 0; i < count; ++i)
-    scene.robots.push_back(disc(i, r, places[2 * i], places[2 * i + 1]));
-  return scene;
+  return true;
+}
+
+}  // namespace
+
+Scene discTrianglesScene(uint64_t seed, size_t count) {
+  Random rng(seed);
+  // Density from the seed: the box holds count discs at 70-150 area per disc; a quarter to 0.85
+  // of count triangles (10-17 for 20 discs). A square too crowded for the draws is grown by a
+  // tenth until they fit.
+  const double perDisc = rng.uniform(70, 150);
+  double half = 0.5 * std::sqrt(perDisc * double(count));
+  const size_t triangles =
+      std::max<size_t>(1, size_t(std::lround(double(count) * rng.uniform(0.25, 0.85))));
+  for (;; half *= 1.1) {
+    Scene scene;
+    scene.name = "disc-triangles-";
+    scene.name += std::to_string(count) + "-" + std::to_string(seed);
+    scene.bounds = {-half, -half, half, half};
+    std::vector<Vec2> places;
+    if (!placeDiscsAmongTriangles(rng, count, triangles, half, scene, places)) continue;
+    for (size_t i = 0; i < count; ++i)
+      scene.robots.push_back(disc(i, 1, places[2 * i], places[2 * i + 1]));
+    return scene;
+  }
 }
 
 }  // namespace mms
