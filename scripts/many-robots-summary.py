@@ -15,6 +15,12 @@ import sys
 from collections import defaultdict
 
 
+def robots_in(family):
+    """The robot count a family's name carries ("disc-grid-500"), or 0."""
+    m = re.search(r"-(\d+)", family)
+    return int(m.group(1)) if m else 0
+
+
 def read(path, limit):
     rows = defaultdict(list)  # (family, planner) -> [(seconds or limit, solved, memory MB)]
     with open(path, newline="") as f:
@@ -38,7 +44,7 @@ def cell(runs, limit):
 def main():
     path, limit = sys.argv[1], float(sys.argv[2])
     rows = read(path, limit)
-    families = sorted({f for f, _ in rows}, key=lambda f: (int(re.search(r"-(\d+)", f).group(1)), f))
+    families = sorted({f for f, _ in rows}, key=lambda f: (robots_in(f), f))
     planners = sorted({p for _, p in rows}, key=lambda p: (not p.startswith("mms"), p))
     print("| family | " + " | ".join(planners) + " |")
     print("|---|" + "---|" * len(planners))
@@ -50,11 +56,11 @@ def main():
         print()
         print("| family | robots | MMS: median time (solved) | peak memory (median) |")
         print("|---|---|---|---|")
-        keys = sorted(sweep, key=lambda k: (re.sub(r"-\d+.*", "", k[0]), int(re.search(r"-(\d+)", k[0]).group(1))))
+        keys = sorted(sweep, key=lambda k: (re.sub(r"-\d+.*", "", k[0]), robots_in(k[0])))
         for family, planner in keys:
             runs = sweep[(family, planner)]
             m = statistics.median(r[0] for r in runs)
-            n = int(re.search(r"-(\d+)", family).group(1))
+            n = robots_in(family)
             print(f"| {re.sub(r'-[0-9].*', '', family)} | {n} | {m:.3g} s ({sum(r[1] for r in runs)}/{len(runs)}) "
                   f"| {statistics.median(r[2] for r in runs):.0f} MB |")
 

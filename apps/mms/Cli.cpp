@@ -462,8 +462,10 @@ Command addScenario(CLI::App& app) {
       "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor), doors "
       "(--seed: a long robot lines up with the doors of 1-3 thin walls), keyhole (--seed, "
       "--slack: a key passes a keyhole, turns a quarter in a chamber barely larger than its "
-      "turn, and leaves through a side slot) or swallow (--seed, --slack: a U takes a part into "
-      "its mouth and turns half round about it in a bay barely larger than that turn)",
+      "turn, and leaves through a side slot), swallow (--seed, --slack: a U takes a part into "
+      "its mouth and turns half round about it in a bay barely larger than that turn), "
+      "disc-grid (--seed, --robots, --spacing: unit discs on a grid go to the same grid moved "
+      "aside) or disc-triangles (--seed, --robots: unit discs among random triangles)",
       [](CLI::App* scenarioCmd, ScenarioArgs& sa) {
         scenarioCmd
             ->add_option("NAME", sa.name,

@@ -28,10 +28,14 @@ Path parsePath(const nlohmann::json& doc, const std::string& source, const Scene
   const Node robots = root["robots"];
   robots.arraySize(0, kMaxWaypoints);
   if (robots.json().size() != scene.robots.size()) {
-    // Both lists named: a path for another scene is seen at once.
+    // Both lists named (their first names: hundreds of robots stay one readable line), so that
+    // a path for another scene is seen at once.
     auto names = [](auto&& list) {
+      constexpr size_t kShown = 8;
       std::string out;
-      for (const auto& n : list) out += (out.empty() ? "" : ", ") + n;
+      for (size_t i = 0; i < list.size() && i < kShown; ++i)
+        out += (out.empty() ? "" : ", ") + list[i];
+      if (list.size() > kShown) out += ", and " + std::to_string(list.size() - kShown) + " more";
       return "[" + out + "]";
     };
     std::vector<std::string> mine, theirs;

@@ -30,6 +30,7 @@
 #include "mms/Planner.h"
 #include "mms/Scene.h"
 #include "mms/Termination.h"
+#include "planner/HeldRobotPlanner.h"
 
 namespace mms {
 
@@ -49,12 +50,7 @@ struct OrderedStats {
   std::string noPath;
 };
 
-struct OrderedResult {
-  PlanStatus status = PlanStatus::NotFound;
-  std::vector<Config> waypoints;  // all robots' (x, y, theta), certified when Found
-  PathCheckResult certificate;
-  OrderedStats stats;
-};
+using OrderedResult = HeldRobotResult<OrderedStats>;
 
 class OrderedPlanner {
  public:

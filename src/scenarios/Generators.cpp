@@ -439,7 +439,6 @@ Scene openClutterScene(uint64_t seed) {
   }
 }
 
-namespace {
 // A disc robot's shape: the regular 16-gon whose inscribed circle is the disc (as discopygal's
 // discs are imported, with fewer sides), about its centre.
 Ring discShape(double radius) {
@@ -461,7 +460,6 @@ Robot discRobot(size_t i, double radius, Vec2 start, Vec2 goal) {
   r.goal = {goal.x, goal.y, 0};
   return r;
 }
-}  // namespace
 
 Scene discsSwapScene(uint64_t seed) {
   Random rng(seed);

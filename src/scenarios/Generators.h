@@ -139,6 +139,11 @@ Scene assemblyOneScene(double slack);
 /// 4-D problem of the last step, for `mms plan` and `mms bench`. `slack` in (0, 0.15].
 Scene assemblyTwoScene(double slack, bool mPartsOnly = false);
 
+/// A disc robot's shape: the regular 16-gon whose inscribed circle is the disc, about its centre.
+Ring discShape(double radius);
+/// Translating disc robot "disc-<i>" (its shape discShape(radius)) from start to goal.
+Robot discRobot(size_t i, double radius, Vec2 start, Vec2 goal);
+
 /// Discs on a grid going to the same grid moved along one of eight directions (one to three
 /// spacings clear of it), each disc to its own place there: `count` unit discs, `spacing` between
 /// neighbours' centres in radii (3: dense, a disc cannot pass between two; 10: sparse; 0: 3, 5

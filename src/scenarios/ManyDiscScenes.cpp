@@ -11,28 +11,6 @@ namespace mms {
 
 namespace {
 
-// A 16-gon whose inscribed circle is the disc (contains it).
-Ring discAround(double radius) {
-  constexpr int kSides = 16;
-  const double R = radius / std::cos(M_PI / kSides);
-  Ring ring;
-  for (int i = 0; i < kSides; ++i) {
-    const double a = 2 * M_PI * i / kSides;
-    ring.push_back({R * std::cos(a), R * std::sin(a)});
-  }
-  return ring;
-}
-
-Robot disc(size_t i, double radius, Vec2 start, Vec2 goal) {
-  Robot r;
-  r.name = "disc-" + std::to_string(i);
-  r.motion = Motion::Translate;
-  r.shape = discAround(radius);
-  r.start = {start.x, start.y, 0};
-  r.goal = {goal.x, goal.y, 0};
-  return r;
-}
-
 Box around(const std::vector<Vec2>& points, double margin) {
   Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
   for (Vec2 p : points) {
@@ -70,7 +48,7 @@ Scene discGridScene(uint64_t seed, size_t count, double spacing) {
   for (size_t i = 0; i < count; ++i) {
     const Vec2 at{spacing * double(i % cols), spacing * double(i / cols)};
     const Vec2 from = turned(at), to = turned(at + shift);
-    scene.robots.push_back(disc(i, r, from, to));
+    scene.robots.push_back(discRobot(i, r, from, to));
     ends.push_back(from), ends.push_back(to);
   }
   // Room round both grids for a disc to pass: two spacings and a diameter.
@@ -150,7 +128,7 @@ Scene discTrianglesScene(uint64_t seed, size_t count) {
     std::vector<Vec2> places;
     if (!placeDiscsAmongTriangles(rng, count, triangles, half, scene, places)) continue;
     for (size_t i = 0; i < count; ++i)
-      scene.robots.push_back(disc(i, 1, places[2 * i], places[2 * i + 1]));
+      scene.robots.push_back(discRobot(i, 1, places[2 * i], places[2 * i + 1]));
     return scene;
   }
 }
