@@ -79,14 +79,15 @@ def scenario_names() -> list[str]:
 
 
 def scenario(name: str, *, seed: int = 1, tightness: float = 0.0, slack: float | None = None,
-             robots: int | None = None, obstacles: int | None = None,
+             robots: int | None = None, obstacles: int | None = None, spacing: float | None = None,
              m_parts_only: bool = False, translate: list[str] | tuple[str, ...] = ()) -> Scene:
     """A generated scene, the same as `mms scenario NAME --seed K ...` writes.
 
     pacman (tightness), viking-helmet, random-polygons (seed), assembly-1 and assembly-2
     (slack), random (seed, robots, obstacles) and the generated families carry-turn (slack),
     niche-swap (slack), niche-three, discs-swap, discs-room (robots), open-clutter, bend, doors
-    keyhole (slack) and swallow (slack) (seed). translate names robots that only translate (each must keep its angle from
+    keyhole (slack) and swallow (slack) (seed), and many discs: disc-grid (robots, spacing: the
+    grid's centres apart in radii) and disc-triangles (robots). translate names robots that only translate (each must keep its angle from
     start to goal). Raises InputError for an unknown name or a setting out of range."""
     r = _mms.ScenarioRequest()
     r.name = _text(name, "mms.scenario: name")
@@ -99,6 +100,8 @@ def scenario(name: str, *, seed: int = 1, tightness: float = 0.0, slack: float |
         r.robots = _whole(robots, "mms.scenario: robots", limit=1 << 30)
     if obstacles is not None:
         r.obstacles = _whole(obstacles, "mms.scenario: obstacles", limit=1 << 30)
+    if spacing is not None:
+        r.spacing = _number(spacing, "mms.scenario: spacing")
     r.m_parts_only = bool(m_parts_only)
     if isinstance(translate, str) or not isinstance(translate, (list, tuple)):
         raise InputError("mms.scenario: translate: expected a list of robot names, got "

@@ -349,6 +349,7 @@ PYBIND11_MODULE(_mms, m) {
       .def_readwrite("slack_given", &ScenarioRequest::slackGiven)
       .def_readwrite("m_parts_only", &ScenarioRequest::mPartsOnly)
       .def_readwrite("robots", &ScenarioRequest::robots)
+      .def_readwrite("spacing", &ScenarioRequest::spacing)
       .def_readwrite("obstacles", &ScenarioRequest::obstacles)
       .def_readwrite("translate", &ScenarioRequest::translate);
 

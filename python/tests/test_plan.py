@@ -129,3 +129,14 @@ def test_pictures(bar_slot):
     assert "<animate" not in mms.render_svg(bar_slot)
     with pytest.raises(mms.InputError, match="width"):
         mms.render_svg(bar_slot, width=0)
+
+
+def test_many_discs_are_planned_one_at_a_time_and_certified():
+    scene = mms.scenario("disc-grid", seed=3, robots=60, spacing=3)
+    assert len(scene.robot_names) == 60
+    r = mms.plan(scene, "mms", time_limit=30)
+    assert r.found and r.planner == "mms"
+    assert r.stats["counts"]["moves"] == 60  # the ordered planner: each disc once
+    assert mms.check(scene, r.path).ok
+    with pytest.raises(mms.InputError):
+        mms.scenario("disc-grid", robots=20, spacing=1.0)
