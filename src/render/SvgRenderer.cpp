@@ -1,6 +1,7 @@
 #include "render/SvgRenderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -91,6 +92,28 @@ void drawOverlays(std::ostringstream& svg, const SvgOptions& o, double stroke) {
   }
 }
 
+// The waypoints at which robot i's motion changes: the first, the last, and each where it
+// starts, stops or bends. Between two of them it moves on one straight segment or stays put, so
+// drawing these alone draws the same motion.
+std::vector<size_t> turningPoints(const Path& path, size_t i) {
+  const std::vector<Config>& w = path.waypoints;
+  std::vector<size_t> out;
+  auto pose = [&](size_t j) {
+    return std::array<double, 3>{w[j][3 * i], w[j][3 * i + 1], w[j][3 * i + 2]};
+  };
+  for (size_t j = 0; j < w.size(); ++j) {
+    if (j == 0 || j + 1 == w.size()) {
+      out.push_back(j);
+      continue;
+    }
+    const auto a = pose(j - 1), b = pose(j), c = pose(j + 1);
+    // Kept unless it lies between equal neighbours (a stay) or continues a stay into a move.
+    const bool still = a == b && b == c;
+    if (!still) out.push_back(j);
+  }
+  return out;
+}
+
 // Each robot's reference point traced along the path, and faint poses evenly spaced by motion.
 void drawTraces(std::ostringstream& svg, const Scene& scene, const Path& path, const SvgOptions& o,
                 double stroke) {
@@ -102,7 +125,8 @@ void drawTraces(std::ostringstream& svg, const Scene& scene, const Path& path, c
     svg << "<polyline fill=\"none\" stroke=\"" << robotColour(i) << "\" stroke-width=\""
         << fmt(stroke) << "\" stroke-dasharray=\"" << fmt(3 * stroke) << " " << fmt(2 * stroke)
         << "\" points=\"";
-    for (const Config& q : path.waypoints) svg << fmt(q[3 * i]) << "," << fmt(q[3 * i + 1]) << " ";
+    for (size_t j : turningPoints(path, i))
+      svg << fmt(path.waypoints[j][3 * i]) << "," << fmt(path.waypoints[j][3 * i + 1]) << " ";
     svg << "\"/>\n";
   }
   // Ghost poses evenly spaced by motion.
@@ -125,21 +149,22 @@ void drawAnimation(std::ostringstream& svg, const Scene& scene, const Path& path
   const std::vector<double> acc = cumulativeEffort(scene, path);
   const double total = acc.back();
   const double dur = std::clamp(total / extent * o.secondsPerExtent, 2.0, 120.0);
-  std::string keyTimes;
-  for (size_t j = 0; j < acc.size(); ++j) {
-    if (j) keyTimes += ';';
-    keyTimes += fmt(total > 0 ? acc[j] / total : double(j) / std::max<size_t>(1, acc.size() - 1));
-  }
-  if (acc.size() == 1) keyTimes.assign(1, '0');
+  auto keyTime = [&](size_t j) {
+    return fmt(total > 0 ? acc[j] / total : double(j) / std::max<size_t>(1, acc.size() - 1));
+  };
   svg << "<g id=\"animation\">\n";
   for (size_t i = 0; i < k; ++i) {
-    std::string moves, turns;
-    for (size_t j = 0; j < path.waypoints.size(); ++j) {
+    // Each robot's own key frames: where it starts or stops moving (hundreds of robots moving
+    // one at a time would otherwise each repeat every waypoint).
+    std::string moves, turns, keyTimes;
+    for (size_t j : turningPoints(path, i)) {
       const Pose p = poseOf(path.waypoints[j], i);
-      if (j) moves += ';', turns += ';';
+      if (!moves.empty()) moves += ';', turns += ';', keyTimes += ';';
       moves += fmt(p.x) + " " + fmt(p.y);
       turns += fmt(p.theta * 180 / M_PI);
+      keyTimes += keyTime(j);
     }
+    if (path.waypoints.size() == 1) keyTimes.assign(1, '0');
     const Pose p0 = poseOf(path.waypoints.front(), i);
     const std::string timing = "dur=\"" + fmt(dur) + "s\" keyTimes=\"" + keyTimes +
                                "\" calcMode=\"linear\" repeatCount=\"indefinite\"";

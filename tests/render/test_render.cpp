@@ -120,3 +120,27 @@ TEST(Render, ViewerCanvasFollowsTheWindow) {
   EXPECT_NE(html.find("window.innerWidth / W"), std::string::npos);
   EXPECT_EQ(html.find("cv.style.width = W + 'px'"), std::string::npos);  // the fixed size before
 }
+
+// Robots moving one at a time: each robot's animation keeps only the waypoints where it starts,
+// stops or bends, so the picture grows with the robots and the waypoints, not their product.
+TEST(Render, ManyRobotsMovingInTurnAnimateWithTheirOwnKeyFrames) {
+  const Scene s = discGridScene(3, 60, 10);
+  Path path;
+  path.waypoints.push_back(startConfig(s));
+  for (size_t i = 0; i < s.robots.size(); ++i) {
+    Config q = path.waypoints.back();
+    q[3 * i] = s.robots[i].goal.x;
+    q[3 * i + 1] = s.robots[i].goal.y;
+    path.waypoints.push_back(q);
+  }
+  const std::string svg = renderSvg(s, &path);
+  size_t animations = 0, at = 0;
+  while ((at = svg.find("type=\"translate\" values=\"", at)) != std::string::npos) {
+    at += 26;
+    const std::string values = svg.substr(at, svg.find('"', at) - at);
+    // The first waypoint, the move's two ends, the last: at most four frames.
+    EXPECT_LE(std::count(values.begin(), values.end(), ';'), 3) << values;
+    ++animations;
+  }
+  EXPECT_EQ(animations, s.robots.size());
+}
