@@ -44,8 +44,10 @@ class StraightMotion {
     k_ = checker.robotCount();
     rate_.assign(k_, 0.0);
     moving_.clear();
-    radii_.resize(k_);
-    for (size_t i = 0; i < k_; ++i) radii_[i] = checker.radius(i);
+    if (k_ > CollisionChecker::kAllPairsUpTo) {  // the broad phase's discs
+      radii_.resize(k_);
+      for (size_t i = 0; i < k_; ++i) radii_[i] = checker.radius(i);
+    }
     translation_ = rotation_ = maxRate_ = 0;
     minRate_ = kInf;
     for (size_t i = 0; i < k_; ++i) {

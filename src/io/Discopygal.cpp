@@ -48,19 +48,17 @@ double positive(const Node& n) {
 // grown by the largest robot's diameter, with 10 % to spare, leaves a ring round everything in
 // which any robot passes: nobody is walled in where the plane would have let them by.
 Box openPlaneBounds(const Scene& scene) {
-  Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
-  auto grow = [&](Vec2 p) {
-    b.xmin = std::min(b.xmin, p.x), b.ymin = std::min(b.ymin, p.y);
-    b.xmax = std::max(b.xmax, p.x), b.ymax = std::max(b.ymax, p.y);
-  };
-  for (const Ring& o : scene.obstacles)
-    for (Vec2 v : o) grow(v);
+  std::vector<Vec2> points;
+  for (const Ring& o : scene.obstacles) points.insert(points.end(), o.begin(), o.end());
   double diameter = 0;
   for (const Robot& r : scene.robots) {
     diameter = std::max(diameter, 2 * radius(r.shape));
-    for (const Pose& p : {r.start, r.goal})
-      for (Vec2 v : placedRing(r.shape, p)) grow(v);
+    for (const Pose& p : {r.start, r.goal}) {
+      const Ring placed = placedRing(r.shape, p);
+      points.insert(points.end(), placed.begin(), placed.end());
+    }
   }
+  const Box b = boundingBox(points);
   const double margin = 1.1 * diameter;
   return {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
 }

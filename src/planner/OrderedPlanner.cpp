@@ -11,7 +11,6 @@
 #include "manifolds/Slice.h"
 #include "planner/KRobotPlanner.h"
 #include "planner/OneRobotPlanner.h"
-#include "planner/Subspace.h"
 #include "planner/TwoRobotPlanner.h"
 
 namespace mms {
@@ -21,15 +20,6 @@ namespace {
 constexpr size_t kJointRoundsFirst = 4;
 
 bool sameAngle(double a, double b) { return std::fabs(std::remainder(a - b, 2 * M_PI)) < 1e-12; }
-
-Box routeBox(const std::vector<Vec2>& route) {
-  Box b{route[0].x, route[0].y, route[0].x, route[0].y};
-  for (Vec2 p : route) {
-    b.xmin = std::min(b.xmin, p.x), b.ymin = std::min(b.ymin, p.y);
-    b.xmax = std::max(b.xmax, p.x), b.ymax = std::max(b.ymax, p.y);
-  }
-  return b;
-}
 
 // The route from a to b inside one cell of `slice`, if both lie in the same cell.
 std::optional<std::vector<Vec2>> routeIn(const Slice& slice, Vec2 a, Vec2 b) {
@@ -130,7 +120,7 @@ bool OrderedPlanner::take(size_t robot, const std::vector<Vec2>& route) {
 }
 
 // One robot from where it stands to its goal, the others held: the straight motion, the route
-// in the obstacles' slice, an overlay with the robots near it, one with all.
+// in the obstacles' slice, the route in a slice of a region round it (grown as needed).
 bool OrderedPlanner::moveAlone(size_t robot, const Termination& stop) {
   const Robot& r = scene_.robots[robot];
   if (!sameAngle(q_[3 * robot + 2], r.goal.theta)) return false;  // turns: the joint MMS's
@@ -148,24 +138,24 @@ bool OrderedPlanner::moveAlone(size_t robot, const Termination& stop) {
   // among the obstacles and the robots standing in it, costs what the region holds whatever the
   // scene's size. A region whose cell does not join start and goal is grown, up to the bounds.
   const Box& all = scene_.bounds;
-  double margin = settings_.nearRadii * 2 * checker_.radius(robot);
+  double margin = settings_.regionDiameters * 2 * checker_.radius(robot);
   for (;; margin *= 2) {
     if (stop()) return false;
-    Box region = routeBox(*route);
+    Box region = boundingBox(*route);
     region = {std::max(all.xmin, region.xmin - margin), std::max(all.ymin, region.ymin - margin),
               std::min(all.xmax, region.xmax + margin), std::min(all.ymax, region.ymax + margin)};
     const bool whole = region.xmin == all.xmin && region.ymin == all.ymin &&
                        region.xmax == all.xmax && region.ymax == all.ymax;
     std::optional<std::vector<Vec2>> around;
     {
-      const TimeCharge charge(stats_.overlaySeconds);
-      ++stats_.overlays;
+      const TimeCharge charge(stats_.regionSeconds);
+      ++stats_.regionSlices;
       const Scene local = regionScene(robot, region);
       const SliceWorld world(local, 0);
       const Slice slice(world, exact::rationalAngleNear(r.start.theta, 30));
       around = routeIn(slice, from, to);
     }
-    if (around && take(robot, *around)) return ++stats_.overlayMoves, true;
+    if (around && take(robot, *around)) return ++stats_.regionMoves, true;
     if (whole) break;
   }
   return false;
@@ -197,26 +187,25 @@ bool OrderedPlanner::planJointly(std::vector<size_t> robots, bool othersAsObstac
   stats_.jointRobots = robots.size();
   std::vector<Config> w;
   PlanStatus status = PlanStatus::NotFound;
-  if (robots.size() == 1) {
-    OneRobotSettings s;
+  // The recursive MMS for that many robots, with this planner's seed and threads.
+  auto settings = [&](auto s) {
     s.seed = settings_.seed;
     s.threads = settings_.threads;
-    OneRobotPlanner p(sub, 0, s);
+    return s;
+  };
+  auto heldHere = [&](auto s) {
+    s.maxRounds = rounds;
+    return settings(s);
+  };
+  if (robots.size() == 1) {
+    OneRobotPlanner p(sub, 0, settings(OneRobotSettings{}));
     const OneRobotResult res = p.solve(sub.robots[0].start, sub.robots[0].goal, stop);
     status = res.status, w = res.waypoints;
   } else if (robots.size() == 2) {
-    TwoRobotSettings s;
-    s.seed = settings_.seed;
-    s.threads = settings_.threads;
-    s.maxRounds = rounds;
-    TwoRobotResult res = TwoRobotPlanner(sub, s).solve(stop);
+    TwoRobotResult res = TwoRobotPlanner(sub, heldHere(TwoRobotSettings{})).solve(stop);
     status = res.status, w = std::move(res.waypoints);
   } else {
-    KRobotSettings s;
-    s.seed = settings_.seed;
-    s.threads = settings_.threads;
-    s.maxRounds = rounds;
-    KRobotResult res = KRobotPlanner(sub, s).solve(stop);
+    KRobotResult res = KRobotPlanner(sub, heldHere(KRobotSettings{})).solve(stop);
     status = res.status, w = std::move(res.waypoints);
   }
   if (status != PlanStatus::Found) return false;

@@ -5,11 +5,12 @@
 //
 // A robot that moves alone among robots that stand still is one robot among obstacles: its
 // free space at its angle is one exact slice (the paper's fixed-angle manifold) of the
-// obstacles, shared by every robot of the same shape, minus the Minkowski sums of the robots
-// that stand (an overlay, planner/Subspace.h's kind). A move tries, cheapest first: the
-// straight motion; the route through the cell of the obstacles' slice (manifolds/CellRoute.h);
-// an overlay of that slice with the standing robots near the route; with all of them. Each is
-// certified with the others held before it is taken, and the whole path again at the end.
+// obstacles and of the robots that stand. A move tries, cheapest first: the straight motion;
+// the route through its cell of the obstacles' slice (one per shape and angle,
+// manifolds/CellRoute.h); the route through an exact slice of a region round that route alone,
+// with the obstacles and standing robots reaching into it, the region grown until it joins
+// start and goal. Each is certified with the others held before it is taken, and the whole
+// path again at the end.
 //
 // Order: passes over the robots not yet at their goal, those furthest along the robots' common
 // direction of travel first (a grid going to another grid empties from its front), until a
@@ -37,15 +38,15 @@ namespace mms {
 struct OrderedSettings {
   uint64_t seed = 1;  // for the k-robot MMS of robots that block each other
   unsigned threads = 1;
-  /// Standing robots this many moving-robot radii from a route (beyond touching) are
-  /// subtracted in the first overlay; all of them in the second.
-  double nearRadii = 3;
+  /// The first region round the obstacles' route reaches this many moving-robot diameters past
+  /// it (doubled while its slice does not join start and goal).
+  double regionDiameters = 3;
 };
 
 struct OrderedStats {
-  size_t passes = 0, moves = 0, straightMoves = 0, routeMoves = 0, overlayMoves = 0;
-  size_t overlays = 0, baseSlices = 0, jointRobots = 0;  // jointRobots: left to the k-robot MMS
-  double baseSliceSeconds = 0, routeSeconds = 0, overlaySeconds = 0, jointSeconds = 0,
+  size_t passes = 0, moves = 0, straightMoves = 0, routeMoves = 0, regionMoves = 0;
+  size_t regionSlices = 0, baseSlices = 0, jointRobots = 0;  // jointRobots: left to the k-robot MMS
+  double baseSliceSeconds = 0, routeSeconds = 0, regionSeconds = 0, jointSeconds = 0,
          certifySeconds = 0, totalSeconds = 0;
   std::string noPath;
 };

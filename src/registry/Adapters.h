@@ -8,14 +8,15 @@
 
 namespace mms {
 
-/// "mms": MMS for one robot (OneRobotPlanner) or two (TwoRobotPlanner), chosen by the scene.
+/// "mms": MMS chosen by the scene: recursive MMS (one robot, two, k) below kOrderedFrom robots,
+/// the ordered planner from there.
 PlannerInfo mmsPlannerInfo();
 /// "mms-ordered": robots one at a time (OrderedPlanner), which "mms" is from kOrderedFrom robots.
 PlannerInfo orderedPlannerInfo();
 /// "mms-joint": recursive MMS (one, two or k robots), which "mms" is below kOrderedFrom robots.
 PlannerInfo jointPlannerInfo();
 inline constexpr size_t kOrderedFrom = 8;
-/// Whether "mms" takes the scene (one or two robots).
+/// Whether "mms" takes the scene (one robot or more).
 bool mmsTakes(const Scene& scene);
 /// "auto": MMS and a sampling planner racing, the first certified path winning.
 PlannerInfo portfolioPlannerInfo();

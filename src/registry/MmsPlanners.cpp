@@ -112,19 +112,19 @@ PlanStatistics statisticsOf(const OrderedStats& s) {
   PlanStatistics p;
   p.seconds = s.totalSeconds;
   p.rounds = s.passes;
-  p.manifoldsBuilt = s.baseSlices + s.overlays;
+  p.manifoldsBuilt = s.baseSlices + s.regionSlices;
   p.noPath = s.noPath;
   p.counts = {{"passes", s.passes},
               {"moves", s.moves},
               {"straight_moves", s.straightMoves},
               {"route_moves", s.routeMoves},
-              {"overlay_moves", s.overlayMoves},
+              {"region_moves", s.regionMoves},
               {"base_slices", s.baseSlices},
-              {"overlays", s.overlays},
+              {"region_slices", s.regionSlices},
               {"joint_robots", s.jointRobots}};
   p.phases = {{"base_slices", s.baseSliceSeconds},
               {"routes", s.routeSeconds},
-              {"overlays", s.overlaySeconds},
+              {"regions", s.regionSeconds},
               {"joint", s.jointSeconds},
               {"certify", s.certifySeconds}};
   return p;

@@ -107,9 +107,9 @@ std::vector<size_t> turningPoints(const Path& path, size_t i) {
       continue;
     }
     const auto a = pose(j - 1), b = pose(j), c = pose(j + 1);
-    // Kept unless it lies between equal neighbours (a stay) or continues a stay into a move.
-    const bool still = a == b && b == c;
-    if (!still) out.push_back(j);
+    // Dropped only inside a stay (equal to both neighbours): the linear motion between the
+    // kept waypoints around it holds the robot there all the same.
+    if (!(a == b && b == c)) out.push_back(j);
   }
   return out;
 }

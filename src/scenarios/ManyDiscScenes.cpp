@@ -9,19 +9,6 @@
 
 namespace mms {
 
-namespace {
-
-Box around(const std::vector<Vec2>& points, double margin) {
-  Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
-  for (Vec2 p : points) {
-    b.xmin = std::min(b.xmin, p.x), b.ymin = std::min(b.ymin, p.y);
-    b.xmax = std::max(b.xmax, p.x), b.ymax = std::max(b.ymax, p.y);
-  }
-  return {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
-}
-
-}  // namespace
-
 Scene discGridScene(uint64_t seed, size_t count, double spacing) {
   Random rng(seed);
   const double r = 1;
@@ -52,7 +39,9 @@ Scene discGridScene(uint64_t seed, size_t count, double spacing) {
     ends.push_back(from), ends.push_back(to);
   }
   // Room round both grids for a disc to pass: two spacings and a diameter.
-  scene.bounds = around(ends, 2 * spacing + 2 * r);
+  const Box b = boundingBox(ends);
+  const double margin = 2 * spacing + 2 * r;
+  scene.bounds = {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
   return scene;
 }
 

@@ -51,6 +51,14 @@ Config randomConfig(const Scene& s, Random& rng) {
   return q;
 }
 
+// A configuration the checker finds free, of up to 201 drawn; none when all collide.
+std::optional<Config> freeConfig(const Scene& s, const CollisionChecker& c, Random& rng) {
+  Config q = randomConfig(s, rng);
+  for (int attempt = 0; attempt < 200 && !c.isFree(q); ++attempt) q = randomConfig(s, rng);
+  if (!c.isFree(q)) return std::nullopt;
+  return q;
+}
+
 // Every pair, in order: the reference the broad phase must agree with.
 std::optional<std::pair<size_t, size_t>> firstOverlapAllPairs(const CollisionChecker& c,
                                                               const Config& q) {
@@ -122,9 +130,9 @@ TEST(BroadPhase, CertifierAmongManyRobotsAgreesWithDenseSamplingOfAllPairs) {
     const Scene s = crowd(40, seed, 90);
     const CollisionChecker c(s);
     Random rng(seed * 17);
-    Config a = randomConfig(s, rng);
-    for (int attempt = 0; attempt < 200 && !c.isFree(a); ++attempt) a = randomConfig(s, rng);
-    if (!c.isFree(a)) continue;
+    const std::optional<Config> drawn = freeConfig(s, c, rng);
+    if (!drawn) continue;
+    const Config& a = *drawn;
     for (int t = 0; t < 6; ++t) {
       Config b = a;
       const bool all = t % 2 == 0;
@@ -170,10 +178,9 @@ TEST(BroadPhase, APathCertifiesAsItsSegmentsDoOneByOne) {
     const Scene s = crowd(30, seed, 70);
     const CollisionChecker c(s);
     Random rng(seed * 5);
-    Config q = randomConfig(s, rng);
-    for (int attempt = 0; attempt < 200 && !c.isFree(q); ++attempt) q = randomConfig(s, rng);
-    if (!c.isFree(q)) continue;
-    std::vector<Config> path{q};
+    const std::optional<Config> q = freeConfig(s, c, rng);
+    if (!q) continue;
+    std::vector<Config> path{*q};
     for (int m = 0; m < 12; ++m) {
       Config next = path.back();
       const size_t r = rng.below(s.robots.size());
