@@ -22,6 +22,12 @@ inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
 /// A simple polygon as its vertex cycle; counter-clockwise once a scene is loaded.
 using Ring = std::vector<Vec2>;
 
+/// A closed disc: robots and obstacles may be exact discs (see Scene).
+struct Disc {
+  Vec2 center;
+  double radius = 0;
+};
+
 /// Axis-aligned box; also the scene bounds.
 struct Box {
   double xmin = 0, ymin = 0, xmax = 0, ymax = 0;

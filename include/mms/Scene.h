@@ -1,6 +1,7 @@
 #pragma once
 // The planning problem: bounds, obstacles and robots with their start and goal placements.
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,13 +16,28 @@ struct Robot {
   Ring shape;  // counter-clockwise, in the robot's frame
   Pose start, goal;
   Motion motion = Motion::Rigid;
+  /// Radius of the exact disc about the frame origin this robot is; 0 for a polygon robot.
+  /// A disc robot's `shape` is its polygonal stand-in (geometry's discStandIn, around the
+  /// disc): planners that need polygons plan on it, while the collision checker, the loader's
+  /// start and goal tests and every certificate use the disc itself.
+  double disc = 0;
 };
 
 struct Scene {
   std::string name;  // may be empty
   Box bounds;
   std::vector<Ring> obstacles;  // counter-clockwise; may overlap each other
+  /// The obstacles that are exact discs, by obstacle index (shorter than `obstacles` when the
+  /// last ones are polygons). Such an obstacle's ring is its polygonal stand-in, as for robots.
+  std::vector<std::optional<Disc>> obstacleDiscs;
   std::vector<Robot> robots;
+
+  /// Obstacle i as an exact disc, or null when it is a polygon.
+  const Disc* obstacleDisc(size_t i) const {
+    return i < obstacleDiscs.size() && obstacleDiscs[i] ? &*obstacleDiscs[i] : nullptr;
+  }
+  /// Appends an exact disc obstacle (and its stand-in ring).
+  void addObstacleDisc(const Disc& d);
 
   /// Contacts up to this depth count as touching, not colliding (see docs/formats.md).
   double tolerance() const {

@@ -140,3 +140,28 @@ def test_missing_file_and_folder(tmp_path):
         mms.load_scene(tmp_path)
     with pytest.raises(mms.InputError, match="file name"):
         mms.load_scene(42)
+
+
+def test_exact_discs_touch_plan_and_refuse_a_bad_radius():
+    # Three discs of radius 0.5 touching in a row along the bottom wall, beside a disc obstacle.
+    robots = [{"name": f"d{i}", "disc": 0.5, "start": [0.5 + i, 0.5, 0],
+               "goal": [0.5 + i, 3.5, 0]} for i in range(3)]
+    data = {"format": "mms-scene/1", "bounds": [0, 0, 6, 4],
+            "obstacles": [{"center": [4.5, 2], "radius": 0.8}], "robots": robots}
+    s = mms.Scene(data)
+    back = s.to_dict()
+    assert back["robots"][1]["disc"] == 0.5 and "shape" not in back["robots"][1]
+    assert back["obstacles"][0] == {"center": [4.5, 2], "radius": 0.8}
+    result = mms.plan(s, seed=1, time_limit=20)
+    assert result.found and result.certificate.ok
+    assert mms.check(s, result.path).ok
+    for i in range(3):
+        x, y, _ = result.robot_path(i)[-1]
+        assert (x, y) == (0.5 + i, 3.5)
+    bad = json.loads(json.dumps(data))
+    bad["robots"][0]["disc"] = -0.5
+    with pytest.raises(mms.InputError, match=r"robots\[0\]\.disc: radius must be positive"):
+        mms.Scene(bad)
+    bad["robots"][0]["disc"] = float("nan")
+    with pytest.raises(mms.InputError, match=r"disc"):
+        mms.Scene(bad)

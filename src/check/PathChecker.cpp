@@ -55,7 +55,8 @@ class StraightMotion {
       const double dt = std::fabs(b[3 * i + 2] - a[3 * i + 2]);
       translation_ += dp;
       rotation_ += dt;
-      rate_[i] = dp + checker.radius(i) * dt;
+      // A disc turning about its centre covers the same points.
+      rate_[i] = dp + (checker.disc(i) > 0 ? 0 : checker.radius(i) * dt);
       if (rate_[i] > 0) moving_.push_back(i);
       maxRate_ = std::max(maxRate_, rate_[i]);
       if (rate_[i] > 0) minRate_ = std::min(minRate_, rate_[i]);

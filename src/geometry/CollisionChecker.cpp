@@ -47,10 +47,27 @@ ShrunkShape shrinkForContacts(const Ring& shape, double tolerance) {
 
 CollisionChecker::CollisionChecker(const Scene& scene)
     : bounds_(scene.bounds), tolerance_(scene.tolerance()), obstacles_(scene.obstacles) {
-  for (const Ring& o : obstacles_) obstacleBoxes_.push_back(boundingBox(o));
+  for (size_t i = 0; i < obstacles_.size(); ++i) {
+    const Disc* d = scene.obstacleDisc(i);
+    obstacleDiscs_.push_back(d ? *d : Disc{});
+    obstacleBoxes_.push_back(d ? discBox(*d) : boundingBox(obstacles_[i]));
+  }
   for (const Robot& r : scene.robots) {
+    if (r.disc > 0) {
+      // Shrunk by the tolerance like a polygon; the inscribed ring is what NoPath's proofs
+      // may assume the robot holds.
+      const double shrunk = r.disc - tolerance_;
+      if (!(shrunk > 0))
+        throw std::invalid_argument("robot '" + r.name +
+                                    "': its radius is not above the contact tolerance");
+      discs_.push_back(shrunk);
+      radii_.push_back(shrunk);
+      shapes_.push_back(discInscribed({{0, 0}, shrunk}, 2 * kDiscSides));
+      continue;
+    }
     ShrunkShape s = shrinkForContacts(r.shape, tolerance_);
     if (s.error) throw std::invalid_argument("robot '" + r.name + "': " + *s.error);
+    discs_.push_back(0);
     radii_.push_back(mms::radius(s.ring));
     shapes_.push_back(std::move(s.ring));
   }
@@ -60,16 +77,66 @@ namespace {
 // Scratch buffers for placed shapes: the checker is const and called from planner threads,
 // and the hot path must not allocate.
 thread_local Ring placedA, placedB;
+
+// A placed robot or an obstacle: a ring or an exact disc, with its box.
+struct Placed {
+  const Ring* ring = nullptr;  // null for a disc
+  Disc disc;
+  Box box;
+};
+
+// Whether a disc's interior meets a closed polygon (touching discs are free: the robots were
+// shrunk by the tolerance, so a disc contact is never closer than that to a real overlap).
+bool discMeetsRing(const Disc& d, const Ring& ring) {
+  return insideRing(ring, d.center) || distanceToEdges(ring, d.center) < d.radius;
+}
+
+bool overlap(const Placed& a, const Placed& b) {
+  if (!a.box.overlaps(b.box)) return false;
+  if (a.ring && b.ring) return ringsIntersect(*a.ring, a.box, *b.ring, b.box);
+  if (a.ring) return discMeetsRing(b.disc, *a.ring);
+  if (b.ring) return discMeetsRing(a.disc, *b.ring);
+  return norm(a.disc.center - b.disc.center) < a.disc.radius + b.disc.radius;
+}
+
+// Distance between the two shapes, or `bound` when it is at least that.
+double gap(const Placed& a, const Placed& b, double bound) {
+  if (a.box.distance(b.box) >= bound) return bound;
+  if (a.ring && b.ring) return ringDistance(*a.ring, a.box, *b.ring, b.box, bound);
+  double d;
+  if (a.ring || b.ring) {
+    const Ring& ring = a.ring ? *a.ring : *b.ring;
+    const Disc& disc = a.ring ? b.disc : a.disc;
+    d = insideRing(ring, disc.center) ? 0 : distanceToEdges(ring, disc.center) - disc.radius;
+  } else {
+    d = norm(a.disc.center - b.disc.center) - a.disc.radius - b.disc.radius;
+  }
+  return std::min(bound, std::max(0.0, d));
+}
+}  // namespace
+
+namespace {
+Placed asPlaced(const Ring& ring, const Disc& disc, const Box& box) {
+  return disc.radius > 0 ? Placed{nullptr, disc, box} : Placed{&ring, {}, box};
+}
+
+Placed placeRobot(const CollisionChecker& checker, double disc, size_t robot, const Pose& pose,
+                  Ring& buffer) {
+  if (disc > 0) {
+    const Disc d{{pose.x, pose.y}, disc};
+    return {nullptr, d, discBox(d)};
+  }
+  transformRing(checker.shrunkShape(robot), pose, buffer);
+  return {&buffer, {}, boundingBox(buffer)};
+}
 }  // namespace
 
 Contact CollisionChecker::robotContact(size_t robot, const Pose& pose) const {
-  transformRing(shapes_[robot], pose, placedA);
-  const Box box = boundingBox(placedA);
-  // The bounds are convex, so the robot is inside them when its vertices are.
-  if (!bounds_.contains(box)) return {Contact::Kind::Bounds, 0};
+  const Placed a = placeRobot(*this, discs_[robot], robot, pose, placedA);
+  // The bounds are convex, so the robot is inside them when its box is.
+  if (!bounds_.contains(a.box)) return {Contact::Kind::Bounds, 0};
   for (size_t i = 0; i < obstacles_.size(); ++i)
-    if (box.overlaps(obstacleBoxes_[i]) &&
-        ringsIntersect(placedA, box, obstacles_[i], obstacleBoxes_[i]))
+    if (overlap(a, asPlaced(obstacles_[i], obstacleDiscs_[i], obstacleBoxes_[i])))
       return {Contact::Kind::Obstacle, i};
   return {};
 }
@@ -79,9 +146,8 @@ bool CollisionChecker::robotFree(size_t robot, const Pose& pose) const {
 }
 
 bool CollisionChecker::robotsDisjoint(size_t a, const Pose& pa, size_t b, const Pose& pb) const {
-  transformRing(shapes_[a], pa, placedA);
-  transformRing(shapes_[b], pb, placedB);
-  return !ringsIntersect(placedA, boundingBox(placedA), placedB, boundingBox(placedB));
+  return !overlap(placeRobot(*this, discs_[a], a, pa, placedA),
+                  placeRobot(*this, discs_[b], b, pb, placedB));
 }
 
 std::optional<std::pair<size_t, Contact>> CollisionChecker::firstContact(const Config& q) const {
@@ -113,17 +179,21 @@ bool CollisionChecker::isFree(const Config& q) const { return !firstContact(q).h
 
 CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const Pose& pose,
                                                              double bound) const {
-  transformRing(shapes_[robot], pose, placedA);
-  const Box box = boundingBox(placedA);
+  const Placed a = placeRobot(*this, discs_[robot], robot, pose, placedA);
   Clearance c{bound, {Contact::Kind::Bounds, 0}};
-  for (Vec2 v : placedA) {
+  auto toBounds = [&](Vec2 v, double r) {
     const double d = std::min(std::min(v.x - bounds_.xmin, bounds_.xmax - v.x),
-                              std::min(v.y - bounds_.ymin, bounds_.ymax - v.y));
+                              std::min(v.y - bounds_.ymin, bounds_.ymax - v.y)) -
+                     r;
     c.distance = std::min(c.distance, std::max(0.0, d));
-  }
+  };
+  if (a.ring)
+    for (Vec2 v : *a.ring) toBounds(v, 0);
+  else
+    toBounds(a.disc.center, a.disc.radius);
   for (size_t i = 0; i < obstacles_.size() && c.distance > 0; ++i) {
-    if (box.distance(obstacleBoxes_[i]) >= c.distance) continue;
-    const double d = ringDistance(placedA, box, obstacles_[i], obstacleBoxes_[i], c.distance);
+    const double d =
+        gap(a, asPlaced(obstacles_[i], obstacleDiscs_[i], obstacleBoxes_[i]), c.distance);
     if (d < c.distance) c = {d, {Contact::Kind::Obstacle, i}};
   }
   return c;
@@ -131,9 +201,8 @@ CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const
 
 double CollisionChecker::robotsDistance(size_t a, const Pose& pa, size_t b, const Pose& pb,
                                         double bound) const {
-  transformRing(shapes_[a], pa, placedA);
-  transformRing(shapes_[b], pb, placedB);
-  return ringDistance(placedA, boundingBox(placedA), placedB, boundingBox(placedB), bound);
+  return gap(placeRobot(*this, discs_[a], a, pa, placedA),
+             placeRobot(*this, discs_[b], b, pb, placedB), bound);
 }
 
 }  // namespace mms

@@ -7,6 +7,10 @@
 // robot is tested as its shape shrunk inwards by delta (mitred offset), so contacts up to
 // depth delta count as touching, and exact contacts (as MMS produces them) are never
 // reported as collisions however the doubles round.
+//
+// Disc robots and disc obstacles are tested as the discs they are, not their polygonal
+// stand-ins: a disc robot is shrunk by delta as well, and a disc contact is found by its
+// centre's distance (a floating-point test is exact enough here: delta is the margin).
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -66,9 +70,13 @@ class CollisionChecker {
   /// Up to this many robots every pair is tested; beyond, only pairs a sweep over the robots'
   /// discs finds near (geometry/BroadPhase.h). Either way the same pairs collide.
   static constexpr size_t kAllPairsUpTo = 16;
+  /// Radius of robot's disc shrunk by the tolerance; 0 for a polygon robot.
+  double disc(size_t robot) const { return discs_[robot]; }
   /// Largest distance of a shape point from its frame origin: a rotation by dtheta moves no
   /// point of the robot further than radius * |dtheta|.
   double radius(size_t robot) const { return radii_[robot]; }
+  /// The shrunk polygon; for a disc robot a polygon inscribed in its shrunk disc (what a proof
+  /// that no path exists may take it to hold).
   const Ring& shrunkShape(size_t robot) const { return shapes_[robot]; }
   size_t robotCount() const { return shapes_.size(); }
 
@@ -76,9 +84,11 @@ class CollisionChecker {
   Box bounds_;
   double tolerance_;
   std::vector<Ring> obstacles_;
+  std::vector<Disc> obstacleDiscs_;  // radius 0 for polygons
   std::vector<Box> obstacleBoxes_;
   std::vector<Ring> shapes_;
   std::vector<double> radii_;
+  std::vector<double> discs_;
 };
 
 }  // namespace mms

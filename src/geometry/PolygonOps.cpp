@@ -31,6 +31,34 @@ double radius(const Ring& ring) {
   return r;
 }
 
+namespace {
+Ring regularPolygon(Vec2 c, double vertexRadius, int sides, double firstAngle) {
+  Ring ring;
+  for (int i = 0; i < sides; ++i) {
+    const double a = firstAngle + 2 * M_PI * i / sides;
+    ring.push_back({c.x + vertexRadius * std::cos(a), c.y + vertexRadius * std::sin(a)});
+  }
+  return ring;
+}
+}  // namespace
+
+Box discBox(const Disc& d) {
+  return {d.center.x - d.radius, d.center.y - d.radius, d.center.x + d.radius,
+          d.center.y + d.radius};
+}
+
+Ring discStandIn(const Disc& disc, int sides) {
+  // Vertices half a step off the axes put edge midpoints on them. The factor keeps rounding
+  // from pulling an edge inside the circle.
+  const double R = disc.radius / std::cos(M_PI / sides) * (1 + 1e-12);
+  return regularPolygon(disc.center, R, sides, M_PI / sides);
+}
+
+Ring discInscribed(const Disc& disc, int sides) {
+  // Rounding may put a vertex a hair outside: pull it in by as much.
+  return regularPolygon(disc.center, disc.radius * (1 - 1e-12), sides, 0);
+}
+
 bool insideRing(const Ring& ring, Vec2 p) {
   bool in = false;
   const size_t n = ring.size();

@@ -22,10 +22,16 @@ bool insideRing(const Ring& ring, Vec2 p);
 /// The distance from p to the nearest edge of `ring`.
 double distanceToEdges(const Ring& ring, Vec2 p);
 
-struct Disc {
-  Vec2 center;
-  double radius = 0;
-};
+Box discBox(const Disc& disc);
+/// Sides of a disc's polygonal stand-ins.
+constexpr int kDiscSides = 32;
+/// The regular polygon around a disc (its inscribed circle is the disc), with edges facing the
+/// axes: planners that need polygons work on it, a conservative stand-in. Discs that touch
+/// along an axis (a grid at spacing one diameter) keep stand-ins that only touch.
+Ring discStandIn(const Disc& disc, int sides = kDiscSides);
+/// The regular polygon inside a disc, vertices on its circle: for proofs that no path exists,
+/// which must never take more room than the disc has.
+Ring discInscribed(const Disc& disc, int sides = kDiscSides);
 /// A disc inside a simple polygon: its centre lies inside the ring and `radius` is the centre's
 /// distance to the ring's edges (so the disc lies inside). The centre is the best of a grid
 /// over the ring's box, refined by a pattern search: near the largest inscribed disc, not

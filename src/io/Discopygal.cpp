@@ -14,19 +14,6 @@ namespace {
 
 using json_in::Node;
 
-constexpr int kDiscSides = 32;
-
-// A regular polygon containing the disc: its inscribed circle is the disc.
-Ring discPolygon(Vec2 c, double r) {
-  Ring ring;
-  const double R = r / std::cos(M_PI / kDiscSides);
-  for (int i = 0; i < kDiscSides; ++i) {
-    double a = 2 * M_PI * i / kDiscSides;
-    ring.push_back({c.x + R * std::cos(a), c.y + R * std::sin(a)});
-  }
-  return ring;
-}
-
 Ring polygon(const Node& n) {
   Ring r = n.ring(json_in::kMaxCoordinate, json_in::kMaxVertices);
   // discopygal drops repeated points on load; so do we.
@@ -87,7 +74,6 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
   Scene scene;
   scene.name = std::filesystem::path(file).stem().string();
   const Node obstacles = root["obstacles"];
-  size_t discs = 0;
   for (size_t i = 0; i < obstacles.arraySize(0, json_in::kMaxVertices); ++i) {
     const Node o = obstacles[i];
     o.requireObject();
@@ -95,20 +81,14 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
     if (cls == "ObstaclePolygon") {
       scene.obstacles.push_back(polygon(o["poly"]));
     } else if (cls == "ObstacleDisc") {
-      scene.obstacles.push_back(
-          discPolygon(o["location"].point(json_in::kMaxCoordinate), positive(o["radius"])));
-      ++discs;
+      scene.addObstacleDisc({o["location"].point(json_in::kMaxCoordinate), positive(o["radius"])});
     } else {
       o["__class__"].fail("unknown obstacle class '" + cls +
                           "' (expected ObstaclePolygon or ObstacleDisc)");
     }
   }
-  if (discs)
-    notes.warnings.push_back(std::to_string(discs) + " disc obstacle(s) as " +
-                             std::to_string(kDiscSides) + "-gons around the discs (conservative)");
   const Node robots = root["robots"];
   const size_t count = robots.arraySize(1, kMaxRobots);
-  size_t discRobots = 0;
   for (size_t i = 0; i < count; ++i) {
     const Node r = robots[i];
     r.requireObject();
@@ -120,13 +100,16 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
       robot.name = r["data"]["name"].string();
     if (cls == "RobotPolygon" || cls == "RobotDisc") {
       robot.motion = Motion::Translate;
-      robot.shape =
-          cls == "RobotPolygon" ? polygon(r["poly"]) : discPolygon({0, 0}, positive(r["radius"]));
+      if (cls == "RobotPolygon") {
+        robot.shape = polygon(r["poly"]);
+      } else {
+        robot.disc = positive(r["radius"]);
+        robot.shape = discStandIn({{0, 0}, robot.disc});
+      }
       const Vec2 s = r["start"].point(json_in::kMaxCoordinate),
                  e = r["end"].point(json_in::kMaxCoordinate);
       robot.start = {s.x, s.y, 0};
       robot.goal = {e.x, e.y, 0};
-      discRobots += cls == "RobotDisc";
     } else if (cls == "RobotRod") {
       const double len = positive(r["length"]);
       const double w = len / 100;
@@ -147,10 +130,6 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
     }
     scene.robots.push_back(robot);
   }
-  // One note for them all: a scene of four hundred discs is not four hundred surprises.
-  if (discRobots)
-    notes.warnings.push_back(std::to_string(discRobots) + " disc robot(s) as " +
-                             std::to_string(kDiscSides) + "-gons around the discs (conservative)");
   scene.bounds = openPlaneBounds(scene);
   notes.warnings.push_back(
       "bounds: none in discopygal; the box around obstacles and robots, grown on every side by "
@@ -162,9 +141,16 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
 std::string discopygalJson(const Scene& scene, ImportNotes& notes) {
   using nlohmann::json;
   json obstacles = json::array();
-  for (const Ring& o : scene.obstacles)
-    obstacles.push_back(
-        {{"__class__", "ObstaclePolygon"}, {"poly", ringToJson(o)}, {"data", json::object()}});
+  for (size_t i = 0; i < scene.obstacles.size(); ++i) {
+    const Disc* d = scene.obstacleDisc(i);
+    obstacles.push_back(d ? json{{"__class__", "ObstacleDisc"},
+                                 {"location", {d->center.x, d->center.y}},
+                                 {"radius", d->radius},
+                                 {"data", json::object()}}
+                          : json{{"__class__", "ObstaclePolygon"},
+                                 {"poly", ringToJson(scene.obstacles[i])},
+                                 {"data", json::object()}});
+  }
   // The bounds as four walls, 5 % of the scene's size thick, overlapping at the corners.
   const Box& b = scene.bounds;
   const double t = 0.05 * std::max(b.width(), b.height());
@@ -180,6 +166,14 @@ std::string discopygalJson(const Scene& scene, ImportNotes& notes) {
   notes.warnings.push_back("bounds written as four walls (discopygal scenes have none)");
   json robots = json::array();
   for (const Robot& r : scene.robots) {
+    if (r.disc > 0) {
+      robots.push_back({{"__class__", "RobotDisc"},
+                        {"radius", r.disc},
+                        {"start", {r.start.x, r.start.y}},
+                        {"end", {r.goal.x, r.goal.y}},
+                        {"data", {{"name", r.name}}}});
+      continue;
+    }
     Ring shape = r.shape;
     if (r.motion == Motion::Rigid) {
       shape = placedRing(r.shape, {0, 0, r.start.theta});

@@ -24,7 +24,24 @@ Config goalConfig(const Scene& scene) {
   return q;
 }
 
+void Scene::addObstacleDisc(const Disc& d) {
+  if (obstacleDiscs.size() < obstacles.size()) obstacleDiscs.resize(obstacles.size());
+  obstacles.push_back(discStandIn(d));
+  obstacleDiscs.push_back(d);
+}
+
 namespace {
+
+/// A disc's radius: finite and positive, and above the contact tolerance (a disc shrunk by it
+/// must keep some room).
+double readRadius(const Node& node, double tolerance) {
+  const double r = node.number(json_in::kMaxCoordinate);
+  if (!(r > 0)) node.fail("radius must be positive (got " + std::to_string(r) + ")");
+  if (!(r > 2 * tolerance))
+    node.fail("radius " + std::to_string(r) + " is not above twice the contact tolerance " +
+              std::to_string(tolerance));
+  return r;
+}
 
 /// A simple polygon with positive area, returned counter-clockwise.
 Ring readPolygon(const Node& node) {
@@ -45,6 +62,17 @@ Ring readPolygon(const Node& node) {
   return ring;
 }
 
+/// A polygon (array of points) or a disc ({"center": [x, y], "radius": r}).
+void readObstacle(const Node& node, Scene& scene) {
+  if (node.json().is_object()) {
+    node.allowOnly({"center", "radius"});
+    scene.addObstacleDisc({node["center"].point(json_in::kMaxCoordinate),
+                           readRadius(node["radius"], scene.tolerance())});
+    return;
+  }
+  scene.obstacles.push_back(readPolygon(node));
+}
+
 Pose readPose(const Node& node) {
   node.arraySize(3, 3);
   return {node[size_t(0)].number(json_in::kMaxCoordinate),
@@ -52,12 +80,20 @@ Pose readPose(const Node& node) {
           node[size_t(2)].number(json_in::kMaxAngle)};
 }
 
-Robot readRobot(const Node& node, size_t index) {
-  node.allowOnly({"name", "shape", "start", "goal", "motion"});
+Robot readRobot(const Node& node, size_t index, double tolerance) {
+  node.allowOnly({"name", "shape", "disc", "start", "goal", "motion"});
   Robot r;
   r.name = node.has("name") ? node["name"].string() : "robot" + std::to_string(index);
   if (r.name.empty()) node["name"].fail("robot name is empty");
-  r.shape = readPolygon(node["shape"]);
+  if (node.has("disc") && node.has("shape")) node.fail("a robot has a shape or a disc, not both");
+  if (node.has("disc")) {
+    // Turning a disc changes nothing: it translates unless told otherwise.
+    r.disc = readRadius(node["disc"], tolerance);
+    r.shape = discStandIn({{0, 0}, r.disc});
+    r.motion = Motion::Translate;
+  } else {
+    r.shape = readPolygon(node["shape"]);
+  }
   r.start = readPose(node["start"]);
   r.goal = readPose(node["goal"]);
   if (node.has("motion")) {
@@ -133,7 +169,7 @@ Scene parseScene(const nlohmann::json& doc, const std::string& source) {
   const size_t nObstacles = obstacles.arraySize(0, kMaxObstacles);
   size_t totalVertices = 0;
   for (size_t i = 0; i < nObstacles; ++i) {
-    scene.obstacles.push_back(readPolygon(obstacles[i]));
+    readObstacle(obstacles[i], scene);
     totalVertices += scene.obstacles.back().size();
     if (totalVertices > 10 * json_in::kMaxVertices)
       obstacles[i].fail("too many obstacle vertices in total (at most " +
@@ -144,12 +180,13 @@ Scene parseScene(const nlohmann::json& doc, const std::string& source) {
   const size_t nRobots = robots.arraySize(1, kMaxRobots);
   std::set<std::string> names;
   for (size_t i = 0; i < nRobots; ++i) {
-    scene.robots.push_back(readRobot(robots[i], i));
+    scene.robots.push_back(readRobot(robots[i], i, scene.tolerance()));
     if (!names.insert(scene.robots.back().name).second)
       (robots[i].has("name") ? robots[i]["name"] : robots[i])
           .fail("duplicate robot name '" + scene.robots.back().name + "'");
   }
   for (size_t i = 0; i < nRobots; ++i) {
+    if (scene.robots[i].disc > 0) continue;
     ShrunkShape s = shrinkForContacts(scene.robots[i].shape, scene.tolerance());
     if (s.error) robots[i]["shape"].fail(*s.error);
   }
@@ -171,14 +208,24 @@ nlohmann::json sceneToJson(const Scene& scene) {
   if (!scene.name.empty()) j["name"] = scene.name;
   j["bounds"] = {scene.bounds.xmin, scene.bounds.ymin, scene.bounds.xmax, scene.bounds.ymax};
   j["obstacles"] = nlohmann::json::array();
-  for (const Ring& o : scene.obstacles) j["obstacles"].push_back(ringToJson(o));
+  for (size_t i = 0; i < scene.obstacles.size(); ++i) {
+    const Disc* d = scene.obstacleDisc(i);
+    j["obstacles"].push_back(
+        d ? nlohmann::json{{"center", {d->center.x, d->center.y}}, {"radius", d->radius}}
+          : ringToJson(scene.obstacles[i]));
+  }
   j["robots"] = nlohmann::json::array();
-  for (const Robot& r : scene.robots)
-    j["robots"].push_back({{"name", r.name},
-                           {"shape", ringToJson(r.shape)},
-                           {"start", {r.start.x, r.start.y, r.start.theta}},
-                           {"goal", {r.goal.x, r.goal.y, r.goal.theta}},
-                           {"motion", r.motion == Motion::Rigid ? "rigid" : "translate"}});
+  for (const Robot& r : scene.robots) {
+    nlohmann::json robot = {{"name", r.name}};
+    if (r.disc > 0)
+      robot["disc"] = r.disc;
+    else
+      robot["shape"] = ringToJson(r.shape);
+    robot["start"] = {r.start.x, r.start.y, r.start.theta};
+    robot["goal"] = {r.goal.x, r.goal.y, r.goal.theta};
+    robot["motion"] = r.motion == Motion::Rigid ? "rigid" : "translate";
+    j["robots"].push_back(std::move(robot));
+  }
   return j;
 }
 

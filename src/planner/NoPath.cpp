@@ -15,7 +15,11 @@ namespace {
 bool apartAlone(const Scene& scene, Ring probe, double theta, Vec2 from, Vec2 to) {
   Scene alone;
   alone.bounds = scene.bounds;
+  // Disc obstacles as polygons inside them: the proof may only ever take less room than the
+  // scene's obstacles do.
   alone.obstacles = scene.obstacles;
+  for (size_t i = 0; i < alone.obstacles.size(); ++i)
+    if (const Disc* d = scene.obstacleDisc(i)) alone.obstacles[i] = discInscribed(*d);
   alone.robots = {
       {"probe", std::move(probe), {from.x, from.y, theta}, {to.x, to.y, theta}, Motion::Translate}};
   const SliceWorld world(alone, 0);
@@ -39,11 +43,15 @@ bool insideWithMargin(const Ring& inner, const Ring& outer, double margin) {
 std::string translatingCutOff(const Scene& scene, const CollisionChecker& checker, size_t robot,
                               const Pose& start, const Pose& goal) {
   const double delta = checker.tolerance();
-  const ShrunkShape probe = shrinkForContacts(scene.robots[robot].shape, 2 * delta);
+  const Robot& r = scene.robots[robot];
+  // A disc robot's probe lies inside its disc shrunk by 2 delta by construction.
+  const ShrunkShape probe = r.disc > 0
+                                ? ShrunkShape{discInscribed({{0, 0}, r.disc - 2 * delta}), {}}
+                                : shrinkForContacts(r.shape, 2 * delta);
   // The slice turns the probe by a rational angle within 2^-30 of the robot's: far less than the
   // margin on any scene whose robots are smaller than a thousand times its extent.
   if (probe.error || radius(probe.ring) * 0x1p-28 > delta / 4 ||
-      !insideWithMargin(probe.ring, checker.shrunkShape(robot), delta / 4))
+      (r.disc == 0 && !insideWithMargin(probe.ring, checker.shrunkShape(robot), delta / 4)))
     return "";
   if (!apartAlone(scene, probe.ring, start.theta, {start.x, start.y}, {goal.x, goal.y})) return "";
   return "robot '" + scene.robots[robot].name +

@@ -204,22 +204,39 @@ std::string discopygalScene() {
     "metadata": {"version": "1.1.1", "solvers": "", "details": ""}})";
 }
 
-// Hundreds of discs are one conversion: one note says how many, not one per disc.
-TEST(Import, DiscRobotsAreNotedOnce) {
+// discopygal's discs are exact discs in mms, not polygons: no note, and they go back as discs.
+// Discs that touch at the start (radius 0.5 at spacing 1, as in multi-agent benchmarks) load.
+TEST(Import, DiscRobotsAndDiscObstaclesStayDiscsBothWays) {
   std::string robots;
   for (int i = 0; i < 12; ++i)
     robots += std::string(i ? "," : "") +
-              R"({"__class__": "RobotDisc", "radius": 0.4, "start": [)" + std::to_string(2 * i) +
-              R"(, 0], "end": [)" + std::to_string(2 * i) + R"(, 5], "data": {}})";
+              R"({"__class__": "RobotDisc", "radius": 0.5, "start": [)" + std::to_string(i) +
+              R"(, 0], "end": [)" + std::to_string(i) + R"(, 5], "data": {}})";
   TempDir dir;
   const std::string file = dir.file(
-      "discs.json", R"({"__class__": "Scene", "obstacles": [], "robots": [)" + robots + "]}");
+      "discs.json",
+      R"({"__class__": "Scene", "obstacles": [{"__class__": "ObstacleDisc", "location": [5.5, 2.5], "radius": 0.75, "data": {}}], "robots": [)" +
+          robots + "]}");
   ImportNotes notes;
-  importDiscopygal(file, notes);
-  std::string disc;
-  for (const std::string& w : notes.warnings)
-    if (w.find("-gon") != std::string::npos) disc += w + "\n";
-  EXPECT_EQ(disc, "12 disc robot(s) as 32-gons around the discs (conservative)\n");
+  const Scene s = importDiscopygal(file, notes);
+  for (const std::string& w : notes.warnings) EXPECT_EQ(w.find("-gon"), std::string::npos) << w;
+  ASSERT_EQ(s.robots.size(), 12u);
+  for (const Robot& r : s.robots) EXPECT_EQ(r.disc, 0.5);
+  ASSERT_NE(s.obstacleDisc(0), nullptr);
+  EXPECT_EQ(s.obstacleDisc(0)->radius, 0.75);
+
+  ImportNotes exportNotes;
+  const nlohmann::json out = nlohmann::json::parse(discopygalJson(s, exportNotes));
+  EXPECT_EQ(out["obstacles"][0]["__class__"], "ObstacleDisc");
+  EXPECT_EQ(out["robots"][3]["__class__"], "RobotDisc");
+  EXPECT_EQ(out["robots"][3]["radius"], 0.5);
+  ImportNotes again;
+  const Scene t = importDiscopygal(dir.file("back.json", out.dump()), again);
+  ASSERT_EQ(t.robots.size(), 12u);
+  EXPECT_EQ(t.robots[11].disc, 0.5);
+  EXPECT_EQ(t.robots[11].goal.y, 5);
+  ASSERT_NE(t.obstacleDisc(0), nullptr);
+  EXPECT_EQ(t.obstacleDisc(0)->center.x, 5.5);
 }
 
 TEST(Import, DiscopygalScenesConvertConservatively) {
@@ -242,12 +259,16 @@ TEST(Import, DiscopygalScenesConvertConservatively) {
     }
     return d;
   };
-  EXPECT_GE(inradius(s.obstacles[1], {4, 4}), 1.5 * (1 - 1e-12));
+  EXPECT_GE(inradius(s.obstacles[1], {4, 4}), 1.5 * (1 - 1e-12)) << "the disc's stand-in";
+  ASSERT_NE(s.obstacleDisc(1), nullptr);
+  EXPECT_EQ(s.obstacleDisc(1)->radius, 1.5);
+  EXPECT_EQ(s.obstacleDisc(0), nullptr);
   ASSERT_EQ(s.robots.size(), 3u);
   EXPECT_EQ(s.robots[0].name, "tri");
   EXPECT_EQ(s.robots[0].motion, Motion::Translate);
   EXPECT_EQ(s.robots[1].motion, Motion::Translate);
   EXPECT_GE(inradius(s.robots[1].shape, {0, 0}), 0.5 * (1 - 1e-12));
+  EXPECT_EQ(s.robots[1].disc, 0.5);
   // The rod: rigid, from its first end (the reference point) along theta, inside the rectangle.
   const Robot& rod = s.robots[2];
   EXPECT_EQ(rod.motion, Motion::Rigid);

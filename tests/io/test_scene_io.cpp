@@ -189,7 +189,54 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"translate_goal_angle", [](json& j) { j["robots"][1]["motion"] = "translate"; },
                 nullptr, "robots[1].goal[2]", "a translate robot keeps its angle"},
         BadCase{"robot_unknown_field", [](json& j) { j["robots"][0]["speed"] = 3; }, nullptr,
-                "robots[0].speed", "unknown field"}),
+                "robots[0].speed", "unknown field"},
+        // Exact discs: a radius that is no radius, a robot that is both, discs that overlap.
+        BadCase{"disc_radius_zero",
+                [](json& j) {
+                  j["robots"][0].erase("shape");
+                  j["robots"][0]["disc"] = 0;
+                },
+                nullptr, "robots[0].disc", "radius must be positive"},
+        BadCase{"disc_radius_negative",
+                [](json& j) { j["obstacles"].push_back({{"center", {2, 8}}, {"radius", -1}}); },
+                nullptr, "obstacles[1].radius", "radius must be positive"},
+        BadCase{"disc_radius_not_a_number",
+                [](json& j) { j["obstacles"].push_back({{"center", {2, 8}}, {"radius", "big"}}); },
+                nullptr, "obstacles[1].radius", "expected a number"},
+        BadCase{"disc_radius_infinite", nullptr,
+                R"({"format": "mms-scene/1", "bounds": [0, 0, 10, 10], "obstacles": [],
+                    "robots": [{"disc": 1e300, "start": [5, 5, 0], "goal": [5, 5, 0]}]})",
+                "robots[0].disc", "out of range"},
+        BadCase{"disc_radius_below_tolerance",
+                [](json& j) {
+                  j["robots"][0].erase("shape");
+                  j["robots"][0]["disc"] = 1e-9;
+                },
+                nullptr, "robots[0].disc", "not above twice the contact tolerance"},
+        BadCase{"disc_and_shape",
+                [](json& j) { j["robots"][0]["disc"] = 0.5; }, nullptr, "robots[0]",
+                "a shape or a disc, not both"},
+        BadCase{"disc_obstacle_unknown_field",
+                [](json& j) {
+                  j["obstacles"].push_back({{"center", {2, 8}}, {"radius", 1}, {"colour", 1}});
+                },
+                nullptr, "obstacles[1].colour", "unknown field"},
+        BadCase{"disc_robots_overlap_at_start",
+                [](json& j) {
+                  for (int i : {0, 1}) {
+                    j["robots"][i].erase("shape");
+                    j["robots"][i]["disc"] = 0.5;
+                    j["robots"][i]["goal"][2] = 0;
+                  }
+                  j["robots"][1]["start"] = {1.99, 1, 0};
+                },
+                nullptr, "robots[1].start", "robot 'b' collides with robot 'a'"},
+        BadCase{"disc_robot_in_disc_obstacle",
+                [](json& j) {
+                  j["obstacles"].push_back({{"center", {2, 8}}, {"radius", 1}});
+                  j["robots"][0]["start"] = {2.5, 7.5, 0};
+                },
+                nullptr, "robots[0].start", "robot 'a' collides with obstacles[1]"}),
     [](const auto& info) { return std::string(info.param.label); });
 
 // Cases whose text is built at run time.
@@ -240,6 +287,32 @@ TEST(SceneLoad, NormalisesOrientationAndAcceptsTouchingStart) {
   // Pushed in by ten tolerances it collides.
   j["robots"][0]["start"] = {3.5 + 10 * s.tolerance(), 5, 0};
   EXPECT_THROW(parseScene(j, "inline"), InputError);
+}
+
+// Discs that touch (radius 0.5 at spacing 1, in any direction, and along a wall) load: the
+// checker tests the discs, not polygons around them. They save and load as discs.
+TEST(SceneLoad, TouchingDiscsLoadAndRoundTripAsDiscs) {
+  json j = baseScene();
+  j["obstacles"].push_back({{"center", {7, 2}}, {"radius", 0.5}});
+  j["robots"] = json::array();
+  const double a = 0.7;  // not a multiple of any polygon's edge angle
+  const double xs[] = {0.5, 1.5, 1.5 + std::cos(a), 7, 4};
+  const double ys[] = {0.5, 0.5, 0.5 + std::sin(a), 3, 2};
+  for (int i = 0; i < 5; ++i)
+    j["robots"].push_back({{"name", "disc-" + std::to_string(i)},
+                           {"disc", 0.5},
+                           {"start", {xs[i], ys[i], 0}},
+                           {"goal", {xs[i], ys[i] + 6, 0}}});
+  const Scene s = parseScene(j, "touching.json");
+  ASSERT_EQ(s.robots.size(), 5u);
+  EXPECT_EQ(s.robots[2].disc, 0.5);
+  EXPECT_EQ(s.robots[2].motion, Motion::Translate) << "a disc translates unless told";
+  ASSERT_NE(s.obstacleDisc(1), nullptr);
+  EXPECT_EQ(s.obstacleDisc(0), nullptr);
+  const Scene back = parseScene(sceneToJson(s), "again.json");
+  EXPECT_EQ(sceneToJson(back), sceneToJson(s));
+  EXPECT_EQ(sceneToJson(s)["robots"][0].count("shape"), 0u);
+  EXPECT_EQ(sceneToJson(s)["obstacles"][1]["radius"], 0.5);
 }
 
 TEST(SceneLoad, RoundTripsThroughSave) {
