@@ -50,6 +50,7 @@ class StraightMotion {
     }
     translation_ = rotation_ = maxRate_ = 0;
     minRate_ = kInf;
+    discsOnly_ = true;
     for (size_t i = 0; i < k_; ++i) {
       const double dp = std::hypot(b[3 * i] - a[3 * i], b[3 * i + 1] - a[3 * i + 1]);
       const double dt = std::fabs(b[3 * i + 2] - a[3 * i + 2]);
@@ -58,6 +59,7 @@ class StraightMotion {
       // A disc turning about its centre covers the same points.
       rate_[i] = dp + (checker.disc(i) > 0 ? 0 : checker.radius(i) * dt);
       if (rate_[i] > 0) moving_.push_back(i);
+      if (rate_[i] > 0 && checker.disc(i) == 0) discsOnly_ = false;
       maxRate_ = std::max(maxRate_, rate_[i]);
       if (rate_[i] > 0) minRate_ = std::min(minRate_, rate_[i]);
     }
@@ -133,6 +135,33 @@ class StraightMotion {
   }
 
  private:
+ public:
+  /// Every moving robot is a disc: a translating disc sweeps a stadium, and sweep() tests the
+  /// whole motion at once, exactly, instead of piece by piece (which along a contact needs
+  /// pieces as short as the tolerance).
+  bool discsOnly() const { return discsOnly_; }
+  /// The least distance over the whole motion of each moving disc to the bounds and obstacles
+  /// and to every other robot (a pair of moving discs once): `visit(distance, robot, contact)`
+  /// until it returns false.
+  template <class Visit>
+  void sweep(const Visit& visit) const {
+    const CollisionChecker& checker = *checker_;
+    const Config &a = *a_, &b = *b_;
+    auto from = [&](size_t i) { return Vec2{a[3 * i], a[3 * i + 1]}; };
+    auto to = [&](size_t i) { return Vec2{b[3 * i], b[3 * i + 1]}; };
+    for (size_t i : moving_) {
+      const auto c = checker.sweptDiscClearance(i, from(i), to(i));
+      if (!visit(c.distance, i, c.nearest)) return;
+      for (size_t j = 0; j < k_; ++j) {
+        if (j == i || (rate_[j] > 0 && j < i)) continue;  // a pair of movers once
+        const double d =
+            checker.sweptDiscDistance(i, from(i), to(i), j, from(j), to(j), poseOf(a, j));
+        if (!visit(d, i, Contact{Contact::Kind::Robot, j})) return;
+      }
+    }
+  }
+
+ private:
   Pose pose(size_t i, double s) const {
     const Config &a = *a_, &b = *b_;
     auto lerp = [&](size_t c) { return a[c] + s * (b[c] - a[c]); };
@@ -148,6 +177,7 @@ class StraightMotion {
   mutable std::vector<DiscSweep::Pair> near_;
   mutable DiscSweep sweep_;
   double translation_ = 0, rotation_ = 0, maxRate_ = 0, minRate_ = kInf;
+  bool discsOnly_ = false;
 };
 
 class Certifier {
@@ -170,6 +200,11 @@ class Certifier {
     const bool continues = certifiedEnd_ == &a || (certifiedEnd_ && *certifiedEnd_ == a);
     if (!continues && evaluate(0.0, /*movingOnly=*/false, 0.0) == Status::Collision)
       return fail(0.0, budgetExceeded_ ? budgetWhy_ : why());
+    if (motion_.discsOnly() && sweptFree()) {
+      certifiedEnd_ = &b;
+      return true;
+    }
+    // (A swept disc that hits something: the pieces below find where it first does.)
     // Pieces are visited left to right; after a collision only what lies before it is
     // searched further, so the reported parameter is the first failure along the segment.
     double failAt = -1;
@@ -215,6 +250,18 @@ class Certifier {
   }
 
   enum class Status { Certified, Uncertified, Collision };
+
+  // The whole motion of moving discs at once (one evaluation).
+  bool sweptFree() {
+    ++r_.evaluations;
+    bool hit = false;
+    motion_.sweep([&](double distance, size_t, const Contact&) {
+      r_.minClearance = std::min(r_.minClearance, std::max(0.0, distance - checker_.tolerance()));
+      hit = distance <= 0;
+      return !hit;
+    });
+    return !hit;
+  }
 
   // Checks the pose at parameter s: Collision when a robot hits something there, Uncertified
   // when some clearance does not exceed the displacement bound over +-half (hit_ says which).
@@ -359,6 +406,13 @@ class MotionTest {
   /// the tolerance allows and still not certified, or the evaluations ran out.
   enum class Status { Collision, Refused, Uncertified, Certified };
   double minRate() const { return motion_.minRate(); }
+  bool discsOnly() const { return motion_.discsOnly(); }
+  /// The moving discs' whole motion, exactly (discsOnly()).
+  bool sweptFree() const {
+    bool hit = false;
+    motion_.sweep([&](double distance, size_t, const Contact&) { return !(hit = distance <= 0); });
+    return !hit;
+  }
   /// Robots that stay put, at s = 0 (free of contact).
   bool stillOnesFree() const { return evaluate(0.0, 0.0, false) != Status::Collision; }
   /// The moving robots over [mid - half, mid + half].
@@ -409,6 +463,7 @@ bool motionFree(const CollisionChecker& checker, const Config& a, const Config& 
     if (!checker.isFree(b)) return false;
     if (!test.stillOnesFree()) return false;
   }
+  if (test.discsOnly()) return test.sweptFree();
   // Breadth first: a motion that hits something is refused after a few evaluations.
   thread_local std::vector<Piece> queue;
   queue.assign(1, {0.0, 1.0});

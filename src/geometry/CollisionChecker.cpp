@@ -205,4 +205,48 @@ double CollisionChecker::robotsDistance(size_t a, const Pose& pa, size_t b, cons
              placeRobot(*this, discs_[b], b, pb, placedB), bound);
 }
 
+namespace {
+// Distance between the segment ab and a closed polygon (0 when they meet).
+double segmentRingDistance(Vec2 a, Vec2 b, const Ring& ring, double bound) {
+  if (insideRing(ring, a)) return 0;
+  double d = bound;
+  for (size_t i = 0, j = ring.size() - 1; i < ring.size() && d > 0; j = i++)
+    d = std::min(d, segmentSegmentDistance(a, b, ring[j], ring[i]));
+  return d;
+}
+}  // namespace
+
+CollisionChecker::Clearance CollisionChecker::sweptDiscClearance(size_t robot, Vec2 a, Vec2 b,
+                                                                 double bound) const {
+  const double r = discs_[robot];
+  Clearance c{bound, {Contact::Kind::Bounds, 0}};
+  // The bounds are convex: the stadium is inside them when both end discs are.
+  for (Vec2 v : {a, b}) {
+    const double d = std::min(std::min(v.x - bounds_.xmin, bounds_.xmax - v.x),
+                              std::min(v.y - bounds_.ymin, bounds_.ymax - v.y)) -
+                     r;
+    c.distance = std::min(c.distance, std::max(0.0, d));
+  }
+  const Box swept{std::min(a.x, b.x) - r, std::min(a.y, b.y) - r, std::max(a.x, b.x) + r,
+                  std::max(a.y, b.y) + r};
+  for (size_t i = 0; i < obstacles_.size() && c.distance > 0; ++i) {
+    if (swept.distance(obstacleBoxes_[i]) >= c.distance) continue;
+    const Disc& o = obstacleDiscs_[i];
+    const double d = o.radius > 0 ? pointSegmentDistance(o.center, a, b) - o.radius - r
+                                  : segmentRingDistance(a, b, obstacles_[i], c.distance + r) - r;
+    if (d < c.distance) c = {std::max(0.0, d), {Contact::Kind::Obstacle, i}};
+  }
+  return c;
+}
+
+double CollisionChecker::sweptDiscDistance(size_t i, Vec2 ai, Vec2 bi, size_t j, Vec2 aj, Vec2 bj,
+                                           const Pose& pj) const {
+  if (discs_[j] > 0)
+    return std::max(0.0, pointSegmentDistance({0, 0}, ai - aj, bi - bj) - discs_[i] - discs_[j]);
+  transformRing(shapes_[j], pj, placedB);
+  return std::max(
+      0.0,
+      segmentRingDistance(ai, bi, placedB, std::numeric_limits<double>::infinity()) - discs_[i]);
+}
+
 }  // namespace mms

@@ -66,6 +66,17 @@ class CollisionChecker {
   double robotsDistance(size_t a, const Pose& pa, size_t b, const Pose& pb,
                         double bound = std::numeric_limits<double>::infinity()) const;
 
+  /// A disc robot translating from a to b sweeps a stadium: its distance (shrunk, as for
+  /// clearances) to the bounds and the obstacles over the whole motion, exactly, or `bound`
+  /// when it is at least that.
+  Clearance sweptDiscClearance(size_t robot, Vec2 a, Vec2 b,
+                               double bound = std::numeric_limits<double>::infinity()) const;
+  /// Disc robot i translating from ai to bi and robot j from aj to bj (a disc, or a polygon that
+  /// stands still at pj): the least distance between them over the motion, exactly (for two
+  /// discs, the distance of their relative motion's segment from the origin).
+  double sweptDiscDistance(size_t i, Vec2 ai, Vec2 bi, size_t j, Vec2 aj, Vec2 bj,
+                           const Pose& pj) const;
+
   double tolerance() const { return tolerance_; }
   /// Up to this many robots every pair is tested; beyond, only pairs a sweep over the robots'
   /// discs finds near (geometry/BroadPhase.h). Either way the same pairs collide.
