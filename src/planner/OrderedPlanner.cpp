@@ -220,6 +220,20 @@ bool OrderedPlanner::planJointly(std::vector<size_t> robots, bool othersAsObstac
   return true;
 }
 
+// Every robot from where it stands to its goal on the pebble graph, if it applies.
+bool OrderedPlanner::shuffle(const Termination& stop) {
+  if (!pebbleApplies(scene_, q_)) return false;
+  const TimeCharge charge(stats_.pebbleSeconds);
+  PebbleSettings pebbles = settings_.pebbles;
+  pebbles.seed = settings_.seed;
+  auto moves = pebbleMotion(scene_, checker_, q_, stop, stats_.pebbles, pebbles);
+  if (!moves) return false;
+  path_.insert(path_.end(), moves->begin() + 1, moves->end());
+  q_ = path_.back();
+  atGoal_.assign(atGoal_.size(), true);
+  return true;
+}
+
 OrderedResult OrderedPlanner::solve(const Termination& stop,
                                     const std::function<void(const OrderedStats&)>& progress) {
   const Stopwatch clock;
@@ -246,7 +260,8 @@ OrderedResult OrderedPlanner::solve(const Termination& stop,
       stats_.totalSeconds = clock.seconds();
       if (progress) progress(stats_);
     }
-    if (!left.empty() && !stop() && !planJointly(left, true, stop) && !stop())
+    if (!left.empty() && !stop() && !shuffle(stop) && !stop() && !planJointly(left, true, stop) &&
+        !stop())
       planJointly(left, false, stop);
   } catch (const Stopped&) {
   }

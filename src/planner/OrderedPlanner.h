@@ -15,8 +15,10 @@
 // Order: passes over the robots not yet at their goal, those furthest along the robots' common
 // direction of travel first (a grid going to another grid empties from its front), until a
 // pass moves nobody. The robots left then block each other (or their goals are walled in by
-// robots already there): the k-robot MMS plans them together, the robots at their goals held as
-// obstacles, and failing that all robots from where they stand. This is the revolving-areas
+// robots already there). Robots of one shape that translate are shuffled on a pebble graph
+// (planner/PebbleMotion.h): placements that step aside, one robot moving at a time. Else the
+// k-robot MMS plans the robots left together, the robots at their goals held as obstacles, and
+// failing that all robots from where they stand. This is the revolving-areas
 // order of Agarwal, Geft, Halperin and Taylor (2022) without its step-aside moves: where a
 // robot must make way, the k-robot MMS finds the way. Probabilistic completeness is the
 // k-robot MMS's, run last over all robots from a configuration the ordered moves reached along
@@ -32,6 +34,7 @@
 #include "mms/Scene.h"
 #include "mms/Termination.h"
 #include "planner/HeldRobotPlanner.h"
+#include "planner/PebbleMotion.h"
 
 namespace mms {
 
@@ -41,13 +44,15 @@ struct OrderedSettings {
   /// The first region round the obstacles' route reaches this many moving-robot diameters past
   /// it (doubled while its slice does not join start and goal).
   double regionDiameters = 3;
+  PebbleSettings pebbles;
 };
 
 struct OrderedStats {
   size_t passes = 0, moves = 0, straightMoves = 0, routeMoves = 0, regionMoves = 0;
   size_t regionSlices = 0, baseSlices = 0, jointRobots = 0;  // jointRobots: left to the k-robot MMS
-  double baseSliceSeconds = 0, routeSeconds = 0, regionSeconds = 0, jointSeconds = 0,
-         certifySeconds = 0, totalSeconds = 0;
+  PebbleStats pebbles;                                       // the shuffle, when it ran
+  double baseSliceSeconds = 0, routeSeconds = 0, regionSeconds = 0, pebbleSeconds = 0,
+         jointSeconds = 0, certifySeconds = 0, totalSeconds = 0;
   std::string noPath;
 };
 
@@ -70,6 +75,7 @@ class OrderedPlanner {
   bool take(size_t robot, const std::vector<Vec2>& route);
   ShapeSlice& sliceOf(size_t robot);
   Scene regionScene(size_t robot, const Box& region) const;
+  bool shuffle(const Termination& stop);
   bool planJointly(std::vector<size_t> robots, bool othersAsObstacles, const Termination& stop);
 
   Scene scene_;

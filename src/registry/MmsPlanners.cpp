@@ -121,12 +121,14 @@ PlanStatistics statisticsOf(const OrderedStats& s) {
               {"region_moves", s.regionMoves},
               {"base_slices", s.baseSlices},
               {"region_slices", s.regionSlices},
+              {"pebble_vertices", s.pebbles.vertices},
+              {"pebble_edges", s.pebbles.edges},
+              {"pebble_states", s.pebbles.states},
+              {"pebble_moves", s.pebbles.moves},
               {"joint_robots", s.jointRobots}};
-  p.phases = {{"base_slices", s.baseSliceSeconds},
-              {"routes", s.routeSeconds},
-              {"regions", s.regionSeconds},
-              {"joint", s.jointSeconds},
-              {"certify", s.certifySeconds}};
+  p.phases = {{"base_slices", s.baseSliceSeconds}, {"routes", s.routeSeconds},
+              {"regions", s.regionSeconds},        {"pebbles", s.pebbleSeconds},
+              {"joint", s.jointSeconds},           {"certify", s.certifySeconds}};
   return p;
 }
 

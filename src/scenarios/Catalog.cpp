@@ -13,12 +13,12 @@
 namespace mms {
 
 const std::vector<std::string>& scenarioNames() {
-  static const std::vector<std::string> names{"pacman",     "viking-helmet", "random-polygons",
-                                              "assembly-1", "assembly-2",    "random",
-                                              "carry-turn", "niche-swap",    "niche-three",
-                                              "discs-swap", "discs-room",    "open-clutter",
-                                              "bend",       "doors",         "keyhole",
-                                              "swallow",    "disc-grid",     "disc-triangles"};
+  static const std::vector<std::string> names{
+      "pacman",      "viking-helmet",  "random-polygons", "assembly-1",
+      "assembly-2",  "random",         "carry-turn",      "niche-swap",
+      "niche-three", "discs-swap",     "discs-room",      "open-clutter",
+      "bend",        "doors",          "keyhole",         "swallow",
+      "disc-grid",   "disc-triangles", "disc-box"};
   return names;
 }
 
@@ -90,6 +90,7 @@ Scene generate(const ScenarioRequest& r) {
     return discGridScene(r.seed, r.robots > 0 ? size_t(r.robots) : 20, r.spacing);
   if (n == "disc-triangles")
     return discTrianglesScene(r.seed, r.robots > 0 ? size_t(r.robots) : 20);
+  if (n == "disc-box") return discBoxScene(r.seed, r.robots > 0 ? size_t(r.robots) : 29);
   if (n == "bend") return bendScene(r.seed);
   if (n == "doors") return doorsScene(r.seed);
   return randomPolygonsTwoRobots(r.seed);
@@ -108,7 +109,8 @@ Scene makeScenario(const ScenarioRequest& r, const std::string& prefix) {
                      didYouMean(r.name, scenarioNames()));
   requireRange(prefix, "tightness", r.tightness, 0, 0.999);
   requireRange(prefix, "slack", r.slack, 0.001, 1);
-  const bool manyDiscs = r.name == "disc-grid" || r.name == "disc-triangles";
+  const bool manyDiscs =
+      r.name == "disc-grid" || r.name == "disc-triangles" || r.name == "disc-box";
   if (r.robots != 0) requireRange(prefix, "robots", r.robots, 1, manyDiscs ? 2000 : 16);
   if (r.spacing != 0) requireRange(prefix, "spacing", r.spacing, 2.05, 100);
   if (r.obstacles != -1) requireRange(prefix, "obstacles", r.obstacles, 0, 100000);

@@ -158,4 +158,10 @@ Scene discGridScene(uint64_t seed, size_t count, double spacing = 0);
 /// the discs can go one at a time.
 Scene discTrianglesScene(uint64_t seed, size_t count);
 
+/// `count` exact discs of radius 0.5 packed in a walled box of cells one diameter wide (two
+/// to a fifth more cells than discs, an aspect and a turn of the box from the seed), touching
+/// their neighbours and the walls; starts and goals are random cells, so the discs must shuffle
+/// (as multi-agent path finding benchmarks place them).
+Scene discBoxScene(uint64_t seed, size_t count);
+
 }  // namespace mms

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <string>
 
+#include "geometry/PolygonOps.h"
 #include "scenarios/Generators.h"
 
 namespace mms {
@@ -120,6 +122,52 @@ Scene discTrianglesScene(uint64_t seed, size_t count) {
       scene.robots.push_back(discRobot(i, 1, places[2 * i], places[2 * i + 1]));
     return scene;
   }
+}
+
+Scene discBoxScene(uint64_t seed, size_t count) {
+  Random rng(seed);
+  constexpr double r = 0.5;
+  // Cells of one diameter, two to a fifth more than the discs (at least two empty), in a box
+  // of an aspect from the seed; discs touch their neighbours and the walls.
+  const size_t holes = 2 + rng.below(std::max<size_t>(1, count / 5));
+  const double aspect = rng.uniform(0.6, 1.6);
+  const size_t cols =
+      std::max<size_t>(2, size_t(std::ceil(std::sqrt(double(count + holes) * aspect))));
+  const size_t rows = std::max<size_t>(2, (count + holes + cols - 1) / cols);
+  std::vector<size_t> cells(cols * rows);
+  std::iota(cells.begin(), cells.end(), 0);
+  auto shuffled = [&] {
+    std::vector<size_t> c = cells;
+    for (size_t i = c.size(); i > 1; --i) std::swap(c[i - 1], c[rng.below(i)]);
+    c.resize(count);
+    return c;
+  };
+  const std::vector<size_t> starts = shuffled(), goals = shuffled();
+  // The whole box turned by an angle from the seed: its walls are obstacles, the bounds the box
+  // round them.
+  const double turn = rng.uniform(0, 2 * M_PI), c = std::cos(turn), s = std::sin(turn);
+  auto turned = [&](Vec2 p) { return Vec2{c * p.x - s * p.y, s * p.x + c * p.y}; };
+  auto centre = [&](size_t cell) {
+    return turned({2 * r * (double(cell % cols) + 0.5), 2 * r * (double(cell / cols) + 0.5)});
+  };
+  Scene scene;
+  scene.name = "disc-box-";
+  scene.name += std::to_string(count) + "-" + std::to_string(seed);
+  const double w = 2 * r * double(cols), h = 2 * r * double(rows), t = 2 * r;
+  for (const Box& wall :
+       {Box{-t, -t, w + t, 0}, Box{-t, h, w + t, h + t}, Box{-t, 0, 0, h}, Box{w, 0, w + t, h}})
+    scene.obstacles.push_back({turned({wall.xmin, wall.ymin}), turned({wall.xmax, wall.ymin}),
+                               turned({wall.xmax, wall.ymax}), turned({wall.xmin, wall.ymax})});
+  std::vector<Vec2> corners;
+  for (const Ring& o : scene.obstacles) corners.insert(corners.end(), o.begin(), o.end());
+  scene.bounds = boundingBox(corners);
+  for (size_t i = 0; i < count; ++i) {
+    Robot robot = discRobot(i, r, centre(starts[i]), centre(goals[i]));
+    robot.disc = r;
+    robot.shape = discStandIn({{0, 0}, r});
+    scene.robots.push_back(std::move(robot));
+  }
+  return scene;
 }
 
 }  // namespace mms

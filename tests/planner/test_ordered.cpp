@@ -94,3 +94,60 @@ TEST(ManyDiscScenes, SameSeedSameSceneValidAndSized) {
   bad.spacing = 1.5;  // discs would overlap
   EXPECT_THROW(makeScenario(bad, "--"), InputError);
 }
+
+// Touching discs packed in a walled box with a few empty cells: nobody can go alone, so the
+// pebble graph shuffles them, one moving at a time, every move a certified translation.
+TEST(Ordered, TouchingDiscsInABoxShuffleOnThePebbleGraph) {
+  for (uint64_t seed = 1; seed <= size_t(seedsToRun(3)); ++seed) {
+    const Scene s = discBoxScene(seed, 16);
+    ASSERT_EQ(s.robots.size(), 16u);
+    const OrderedResult r = plan(s, seed);
+    expectSolved(s, r);
+    EXPECT_GT(r.stats.pebbles.moves, 0u) << s.name;
+    EXPECT_GT(r.stats.pebbles.vertices, 16u) << "placements beyond the starts and goals";
+    EXPECT_EQ(r.stats.jointRobots, 0u);
+    // A shuffle moves one robot per step (what its edges were certified for).
+    size_t single = 0;
+    for (size_t k = 1; k < r.waypoints.size(); ++k) {
+      size_t moved = 0;
+      for (size_t i = 0; i < s.robots.size(); ++i)
+        moved += poseOf(r.waypoints[k], i).x != poseOf(r.waypoints[k - 1], i).x ||
+                 poseOf(r.waypoints[k], i).y != poseOf(r.waypoints[k - 1], i).y;
+      single += moved == 1;
+    }
+    EXPECT_GE(single, r.stats.pebbles.moves) << s.name;
+  }
+}
+
+TEST(Ordered, ThePebbleGraphNeedsOneShapeThatTranslates) {
+  Scene s = discBoxScene(2, 6);
+  EXPECT_TRUE(pebbleApplies(s, startConfig(s)));
+  s.robots[3].disc = 0.4;
+  EXPECT_FALSE(pebbleApplies(s, startConfig(s))) << "two radii";
+  s = discBoxScene(2, 6);
+  s.robots[0].motion = Motion::Rigid;
+  EXPECT_FALSE(pebbleApplies(s, startConfig(s)));
+  s = discBoxScene(2, 1);
+  EXPECT_FALSE(pebbleApplies(s, startConfig(s))) << "one robot";
+}
+
+// The box generator: the same scene for the same seed, valid, discs touching each other and the
+// walls, starts and goals on cells.
+TEST(Ordered, DiscBoxScenesAreReproducibleAndPacked) {
+  for (uint64_t seed : {1, 7}) {
+    const Scene a = discBoxScene(seed, 29), b = discBoxScene(seed, 29);
+    EXPECT_EQ(sceneToJson(a), sceneToJson(b));
+    EXPECT_NO_THROW(parseScene(sceneToJson(a), "box"));
+    ASSERT_EQ(a.robots.size(), 29u);
+    const CollisionChecker checker(a);
+    size_t touching = 0;
+    for (size_t i = 0; i < a.robots.size(); ++i) {
+      EXPECT_EQ(a.robots[i].disc, 0.5);
+      for (size_t j = i + 1; j < a.robots.size(); ++j)
+        touching +=
+            std::fabs(checker.robotsDistance(i, a.robots[i].start, j, a.robots[j].start)) < 1e-4;
+    }
+    EXPECT_GT(touching, 20u) << "packed: many neighbours touch";
+  }
+  EXPECT_NE(sceneToJson(discBoxScene(1, 29)), sceneToJson(discBoxScene(2, 29)));
+}
