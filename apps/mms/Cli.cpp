@@ -465,13 +465,15 @@ Command addScenario(CLI::App& app) {
       "turn, and leaves through a side slot), swallow (--seed, --slack: a U takes a part into "
       "its mouth and turns half round about it in a bay barely larger than that turn), "
       "disc-grid (--seed, --robots, --spacing: unit discs on a grid go to the same grid moved "
-      "aside) or disc-triangles (--seed, --robots: unit discs among random triangles)",
+      "aside), disc-triangles (--seed, --robots: unit discs among random triangles) or disc-box "
+      "(--seed, --robots: discs of radius 0.5 packed touching in a walled box, shuffled)",
       [](CLI::App* scenarioCmd, ScenarioArgs& sa) {
         scenarioCmd
             ->add_option("NAME", sa.name,
                          "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
                          "carry-turn, niche-swap, niche-three, discs-swap, discs-room, "
-                         "open-clutter, bend, doors, keyhole or swallow")
+                         "open-clutter, bend, doors, keyhole, swallow, disc-grid, disc-triangles "
+                         "or disc-box")
             ->required()
             ->check(CLI::IsMember(mms::scenarioNames()));
         outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");
@@ -488,7 +490,7 @@ Command addScenario(CLI::App& app) {
                 "--robots", sa.robots,
                 "random: 1 or 2 robots (default: from the seed); discs-room: how many discs "
                 "(default 10, at most 16); disc-grid, disc-triangles: how many discs (default "
-                "20, at most 2000)")
+                "20, at most 2000); disc-box: how many discs (default 29, at most 2000)")
             ->check(CLI::Range(1, 2000));
         scenarioCmd
             ->add_option("--spacing", sa.spacing,

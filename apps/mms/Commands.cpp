@@ -62,15 +62,22 @@ int validate(const ValidateArgs& a) {
   const Scene s = readScene(a.scene, a.quiet);
   if (a.quiet) return 0;
   size_t vertices = 0;
-  for (const Ring& o : s.obstacles) vertices += o.size();
+  for (size_t i = 0; i < s.obstacles.size(); ++i)
+    vertices += s.obstacleDisc(i) ? 0 : s.obstacles[i].size();
   std::printf("%s: valid %s scene%s%s\n", a.scene.c_str(), kSceneFormat, s.name.empty() ? "" : " '",
               s.name.empty() ? "" : (s.name + "'").c_str());
   std::printf("  bounds [%g, %g] x [%g, %g], %zu obstacles (%zu vertices), contact tolerance %g\n",
               s.bounds.xmin, s.bounds.xmax, s.bounds.ymin, s.bounds.ymax, s.obstacles.size(),
               vertices, s.tolerance());
-  for (const Robot& r : s.robots)
-    std::printf("  robot '%s': %zu vertices, %s, start %s, goal %s\n", r.name.c_str(),
-                r.shape.size(), motionName(r.motion), pose(r.start).c_str(), pose(r.goal).c_str());
+  for (const Robot& r : s.robots) {
+    char shape[64];
+    if (r.disc > 0)
+      std::snprintf(shape, sizeof shape, "disc of radius %g", r.disc);
+    else
+      std::snprintf(shape, sizeof shape, "%zu vertices", r.shape.size());
+    std::printf("  robot '%s': %s, %s, start %s, goal %s\n", r.name.c_str(), shape,
+                motionName(r.motion), pose(r.start).c_str(), pose(r.goal).c_str());
+  }
   return 0;
 }
 

@@ -29,15 +29,18 @@ const g = cv.getContext('2d');
 const px = p => [PAD + (p[0] - B[0]) * S, PAD + (B[3] - p[1]) * S];
 const COLOURS = D.colours;
 const way = D.waypoints || [];
-const radius = D.robots.map(r => Math.max(...r.shape.map(v => Math.hypot(v[0], v[1]))));
+const N = D.robots.length;
+// Exact discs carry a radius instead of a shape (mms-scene/1), obstacles likewise.
+const radius = D.robots.map(r => r.disc || Math.max(...r.shape.map(v => Math.hypot(v[0], v[1]))));
 // Cumulative durations: a segment takes as long as its fastest-moving robot point needs.
 const cum = [0];
 for (let i = 1; i < way.length; ++i) {
   let d = 0;
-  D.robots.forEach((r, k) => {
+  for (let k = 0; k < N; ++k) {
     const a = way[i - 1], b = way[i], o = 3 * k;
-    d = Math.max(d, Math.hypot(b[o] - a[o], b[o + 1] - a[o + 1]) + radius[k] * Math.abs(b[o + 2] - a[o + 2]));
-  });
+    const turn = D.robots[k].disc ? 0 : radius[k] * Math.abs(b[o + 2] - a[o + 2]);
+    d = Math.max(d, Math.hypot(b[o] - a[o], b[o + 1] - a[o + 1]) + turn);
+  }
   cum.push(cum[i - 1] + d);
 }
 const total = cum[cum.length - 1] || 0;
@@ -45,64 +48,119 @@ function configAt(f) {
   if (way.length === 0) return null;
   if (way.length === 1 || total === 0) return way[0];
   const t = Math.min(Math.max(f, 0), 1) * total;
-  let i = 1;
-  while (i < way.length - 1 && cum[i] < t) ++i;
-  const seg = cum[i] - cum[i - 1], s = seg > 0 ? (t - cum[i - 1]) / seg : 1;
+  let lo = 1, hi = way.length - 1;  // the first segment ending at or after t
+  while (lo < hi) { const m = (lo + hi) >> 1; if (cum[m] < t) lo = m + 1; else hi = m; }
+  const i = lo, seg = cum[i] - cum[i - 1], s = seg > 0 ? (t - cum[i - 1]) / seg : 1;
   return way[i - 1].map((v, c) => v + s * (way[i][c] - v));
 }
-function ring(pts) {
-  g.beginPath();
-  pts.forEach((p, i) => { const q = px(p); i ? g.lineTo(q[0], q[1]) : g.moveTo(q[0], q[1]); });
-  g.closePath();
+// Each robot's trace: only where it starts, stops or bends (hundreds of robots moving in turn).
+const traces = D.robots.map((r, k) => {
+  const pts = [];
+  way.forEach(q => {
+    const p = [q[3 * k], q[3 * k + 1]], n = pts.length;
+    if (n && pts[n - 1][0] === p[0] && pts[n - 1][1] === p[1]) return;
+    if (n >= 2) {
+      const a = pts[n - 2], b = pts[n - 1];
+      if (Math.abs((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])) < 1e-12) { pts[n - 1] = p; return; }
+    }
+    pts.push(p);
+  });
+  return pts;
+});
+function line(ctx, pts) {
+  ctx.beginPath();
+  pts.forEach((p, i) => { const q = px(p); i ? ctx.lineTo(q[0], q[1]) : ctx.moveTo(q[0], q[1]); });
 }
-function placed(r, pose) {
+function ring(ctx, pts) { line(ctx, pts); ctx.closePath(); }
+function disc(ctx, c, r) {
+  const q = px(c);
+  ctx.beginPath(); ctx.arc(q[0], q[1], r * S, 0, 2 * Math.PI);
+}
+function robotPath(ctx, k, pose) {
+  const r = D.robots[k];
+  if (r.disc) return disc(ctx, pose, r.disc);
   const c = Math.cos(pose[2]), s = Math.sin(pose[2]);
-  return r.shape.map(v => [pose[0] + c * v[0] - s * v[1], pose[1] + s * v[0] + c * v[1]]);
+  ring(ctx, r.shape.map(v => [pose[0] + c * v[0] - s * v[1], pose[1] + s * v[0] + c * v[1]]));
 }
 const ui = {
   slider: document.getElementById('time'), play: document.getElementById('play'),
   speed: document.getElementById('speed'), traces: document.getElementById('traces'),
-  roadmap: document.getElementById('roadmap'), label: document.getElementById('label')
+  roadmap: document.getElementById('roadmap'), label: document.getElementById('label'),
+  find: document.getElementById('find')
 };
 if (!D.roadmap) { ui.roadmap.disabled = true; ui.roadmap.parentElement.title = 'the path file holds no roadmap (mms plan --save-roadmap)'; }
+// The robot picked out (by name, or under the pointer in the legend or the picture), -1: none.
+let picked = -1, named = -1;
+const byName = new Map(D.robots.map((r, k) => [r.name, k]));
+// What does not move is drawn once, into a second canvas, and copied per frame.
+const still = document.createElement('canvas');
+still.width = W; still.height = H;
+function drawStill() {
+  const s = still.getContext('2d');
+  s.fillStyle = '#ffffff'; s.fillRect(0, 0, W, H);
+  s.strokeStyle = '#333333'; s.lineWidth = 1;
+  const c0 = px([B[0], B[3]]), c1 = px([B[2], B[1]]);
+  s.strokeRect(c0[0], c0[1], c1[0] - c0[0], c1[1] - c0[1]);
+  if (D.roadmap && ui.roadmap.checked) {
+    s.fillStyle = 'rgba(46, 125, 50, 0.15)';
+    (D.roadmap.cells || []).forEach(cell => {
+      s.beginPath();
+      cell.forEach(r => r.forEach((p, i) => { const q = px(p); i ? s.lineTo(q[0], q[1]) : s.moveTo(q[0], q[1]); }));
+      s.fill('evenodd');
+    });
+    s.fillStyle = 'rgba(0, 0, 0, 0.35)';
+    (D.roadmap.points || []).forEach(p => { const q = px(p); s.fillRect(q[0] - 1, q[1] - 1, 2, 2); });
+  }
+  s.fillStyle = '#3f6fb5';
+  D.obstacles.forEach(o => { o.radius !== undefined ? disc(s, o.center, o.radius) : ring(s, o); s.fill(); });
+  for (let k = 0; k < N; ++k) {
+    const r = D.robots[k];
+    s.globalAlpha = picked < 0 || picked === k ? 1 : 0.25;
+    s.lineWidth = picked === k ? 3 : 1.5;
+    s.strokeStyle = '#2e7d32'; robotPath(s, k, r.start); s.stroke();
+    s.strokeStyle = '#c62828'; robotPath(s, k, r.goal); s.stroke();
+    if (way.length && ui.traces.checked) {
+      s.strokeStyle = COLOURS[k % COLOURS.length]; s.lineWidth = picked === k ? 2.5 : 1;
+      s.setLineDash([4, 3]);
+      line(s, traces[k]); s.stroke(); s.setLineDash([]);
+    }
+  }
+  s.globalAlpha = 1;
+}
 function draw() {
   const f = ui.slider.value / 1000;
-  g.fillStyle = '#ffffff'; g.fillRect(0, 0, W, H);
-  g.strokeStyle = '#333333'; g.lineWidth = 1;
-  const c0 = px([B[0], B[3]]), c1 = px([B[2], B[1]]);
-  g.strokeRect(c0[0], c0[1], c1[0] - c0[0], c1[1] - c0[1]);
-  if (D.roadmap && ui.roadmap.checked) {
-    g.fillStyle = 'rgba(46, 125, 50, 0.15)';
-    (D.roadmap.cells || []).forEach(cell => {
-      g.beginPath();
-      cell.forEach(r => r.forEach((p, i) => { const q = px(p); i ? g.lineTo(q[0], q[1]) : g.moveTo(q[0], q[1]); }));
-      g.fill('evenodd');
-    });
-    g.fillStyle = 'rgba(0, 0, 0, 0.35)';
-    (D.roadmap.points || []).forEach(p => { const q = px(p); g.fillRect(q[0] - 1, q[1] - 1, 2, 2); });
-  }
-  g.fillStyle = '#3f6fb5';
-  D.obstacles.forEach(o => { ring(o); g.fill(); });
-  D.robots.forEach((r, k) => {
-    g.lineWidth = 1.5;
-    g.strokeStyle = '#2e7d32'; ring(placed(r, r.start)); g.stroke();
-    g.strokeStyle = '#c62828'; ring(placed(r, r.goal)); g.stroke();
-  });
-  if (way.length && ui.traces.checked) {
-    D.robots.forEach((r, k) => {
-      g.strokeStyle = COLOURS[k % COLOURS.length]; g.lineWidth = 1; g.setLineDash([4, 3]);
-      g.beginPath();
-      way.forEach((q, i) => { const p = px([q[3 * k], q[3 * k + 1]]); i ? g.lineTo(p[0], p[1]) : g.moveTo(p[0], p[1]); });
-      g.stroke(); g.setLineDash([]);
-    });
-  }
+  g.drawImage(still, 0, 0);
   const q = configAt(f);
-  if (q) D.robots.forEach((r, k) => {
+  if (q) for (let k = 0; k < N; ++k) {
+    g.globalAlpha = picked < 0 || picked === k ? 1 : 0.25;
     g.fillStyle = COLOURS[k % COLOURS.length];
-    ring(placed(r, [q[3 * k], q[3 * k + 1], q[3 * k + 2]])); g.fill();
-  });
-  ui.label.textContent = way.length ? 't = ' + f.toFixed(3) + ' of the motion' : 'no path';
+    robotPath(g, k, [q[3 * k], q[3 * k + 1], q[3 * k + 2]]); g.fill();
+    if (picked === k) { g.strokeStyle = '#000000'; g.lineWidth = 2.5; g.stroke(); }
+  }
+  g.globalAlpha = 1;
+  ui.label.textContent = (way.length ? 't = ' + f.toFixed(3) + ' of the motion' : 'no path') +
+      (picked >= 0 ? ' · ' + D.robots[picked].name : '');
 }
+function pick(k) { if (k !== picked) { picked = k; drawStill(); draw(); } }
+document.querySelectorAll('[data-robot]').forEach(e => {
+  e.addEventListener('mouseenter', () => pick(Number(e.dataset.robot)));
+  e.addEventListener('mouseleave', () => pick(named));
+});
+if (ui.find) ui.find.addEventListener('input', () => {
+  named = byName.has(ui.find.value) ? byName.get(ui.find.value) : -1; pick(named);
+});
+// The robot under the pointer, where it is at this moment.
+cv.addEventListener('mousemove', ev => {
+  const q = configAt(ui.slider.value / 1000); if (!q) return;
+  const k2 = cv.width / cv.clientWidth, x = ev.offsetX * k2, y = ev.offsetY * k2;
+  let best = named, bestD = Infinity;
+  for (let k = 0; k < N; ++k) {
+    const c = px([q[3 * k], q[3 * k + 1]]), d = Math.hypot(c[0] - x, c[1] - y);
+    if (d <= radius[k] * S && d < bestD) { best = k; bestD = d; }
+  }
+  pick(best);
+});
+cv.addEventListener('mouseleave', () => pick(named));
 let playing = false, last = 0;
 function frame(ts) {
   if (!playing) return;
@@ -118,17 +176,46 @@ ui.play.onclick = () => {
   if (playing) { if (Number(ui.slider.value) >= 1000) ui.slider.value = 0; last = 0; requestAnimationFrame(frame); }
 };
 ui.slider.oninput = () => { playing = false; ui.play.textContent = 'Play'; draw(); };
-ui.traces.onchange = draw; ui.roadmap.onchange = draw;
+ui.traces.onchange = () => { drawStill(); draw(); };
+ui.roadmap.onchange = ui.traces.onchange;
 function fromHash() {
   const h = new URLSearchParams(location.hash.slice(1));
   if (h.has('t')) { ui.slider.value = Math.round(1000 * Number(h.get('t'))); playing = false; }
   if (h.has('roadmap')) ui.roadmap.checked = h.get('roadmap') === '1';
   if (h.has('traces')) ui.traces.checked = h.get('traces') === '1';
-  draw();
+  if (h.has('robot')) {
+    named = byName.has(h.get('robot')) ? byName.get(h.get('robot')) : -1;
+    if (ui.find) ui.find.value = h.get('robot');
+  }
+  picked = named;
+  drawStill(); draw();
 }
 window.addEventListener('hashchange', fromHash);
 fromHash();
 )JS";
+
+// Each robot's colour and name; hovering one picks it out in the picture, and so does typing its
+// name. Beyond a screenful of names the legend is folded.
+std::string legend(const Scene& scene) {
+  const size_t n = scene.robots.size();
+  std::string html = "<div id=\"legend\" style=\"padding:0 10px\">";
+  html += "<label>robot <input id=\"find\" list=\"robot-names\" placeholder=\"name\"></label>";
+  html += "<datalist id=\"robot-names\">";
+  for (const Robot& r : scene.robots) html += "<option value=\"" + escapeMarkup(r.name) + "\">";
+  html += "</datalist>";
+  const bool fold = n > kViewerLegendUnfolded;
+  html += fold ? "<details><summary>" + std::to_string(n) + " robots</summary>" : "<p>";
+  for (size_t i = 0; i < n; ++i) {
+    html += "<span data-robot=\"";
+    html += std::to_string(i) + "\" style=\"display:inline-block;margin-right:14px\">";
+    html += "<span style=\"display:inline-block;width:12px;height:12px;background:";
+    html += std::string(robotColour(i)) + ";margin-right:5px\"></span>" +
+            escapeMarkup(scene.robots[i].name);
+    html += "</span>";
+  }
+  html += fold ? "</details>" : "</p>";
+  return html + "</div>\n";
+}
 
 }  // namespace
 
@@ -172,16 +259,8 @@ std::string renderHtmlViewer(const Scene& scene, const Path* path) {
       "</div>\n<p style=\"padding:0 10px\">";
   html += escapeMarkup(title) +
           ": obstacles blue, robots green at the start and red at the goal (outlines). "
-          "Link to a moment with #t=0.5.</p>\n";
-  if (scene.robots.size() >= 2) {
-    html += "<p id=\"legend\" style=\"padding:0 10px\">";
-    for (size_t i = 0; i < scene.robots.size(); ++i)
-      html +=
-          std::string("<span style=\"display:inline-block;margin-right:14px\">") +
-          "<span style=\"display:inline-block;width:12px;height:12px;background:" + robotColour(i) +
-          ";margin-right:5px\"></span>" + escapeMarkup(scene.robots[i].name) + "</span>";
-    html += "</p>\n";
-  }
+          "Link to a moment with #t=0.5, to a robot with #robot=NAME.</p>\n";
+  if (scene.robots.size() >= 2) html += legend(scene);
   html += "<script id=\"mms-data\" type=\"application/json\">" + data + "</script>\n";
   html += "<script>" + std::string(kScript) + "</script>\n</body>\n</html>\n";
   return html;

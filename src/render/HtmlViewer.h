@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 // `mms view`: one self-contained HTML file (inline script and data, nothing fetched) that draws
 // the scene on a canvas and plays the path: play/pause, a time slider, speed, each robot's
 // trace, and the planner's free-space cells and line points when the path file holds them
@@ -16,6 +17,8 @@
 namespace mms {
 
 inline constexpr double kViewerCanvasWidth = 800, kViewerPad = 10;
+/// Up to this many robots the legend shows every name; beyond, it is folded.
+inline constexpr size_t kViewerLegendUnfolded = 20;
 
 std::string renderHtmlViewer(const Scene& scene, const Path* path);
 

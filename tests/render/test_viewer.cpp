@@ -8,9 +8,11 @@
 #include <nlohmann/json.hpp>
 
 #include "Support.h"
+#include "geometry/PolygonOps.h"
 #include "io/PathIO.h"
 #include "io/SceneIO.h"
 #include "render/HtmlViewer.h"
+#include "render/Palette.h"
 
 namespace mms {
 namespace {
@@ -123,6 +125,69 @@ TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {
         EXPECT_FALSE(isRobot(px, w, viewerPixel(s, {x, 3}))) << t << dx;
       }
     }
+  }
+}
+
+// Thirty exact discs: the legend folds, and a robot named in the link is drawn in full while
+// the others fade.
+TEST(View, ARobotNamedInTheLinkStandsOutAmongMany) {
+  const auto chromium = test::runCommand("command -v chromium");
+  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  TempDir dir;
+  Scene s;
+  s.name = "many discs";
+  s.bounds = {0, 0, 20, 12};
+  for (int i = 0; i < 30; ++i) {
+    Robot r;
+    r.name = "disc-" + std::to_string(i);
+    r.disc = 0.5;
+    r.shape = discStandIn({{0, 0}, 0.5});
+    r.motion = Motion::Translate;
+    r.start = {1.5 + 2 * (i % 6), 1.5 + 2 * (i / 6), 0};
+    r.goal = {r.start.x + 1, r.start.y, 0};
+    s.robots.push_back(r);
+  }
+  const std::string sceneFile = dir.path("s.json");
+  saveScene(s, sceneFile);
+  Path p;
+  p.waypoints = {startConfig(s), goalConfig(s)};
+  const std::string pathFile = dir.path("p.json");
+  savePath(p, s, pathFile);
+  const std::string html = dir.path("v.html");
+  auto v = runMms("view " + quote(sceneFile) + " " + quote(pathFile) + " -o " + quote(html));
+  ASSERT_EQ(v.code, 0) << v.err;
+  const std::string page = test::readFile(html);
+  EXPECT_NE(page.find("<details><summary>30 robots</summary>"), std::string::npos);
+  EXPECT_NE(page.find("data-robot=\"29\""), std::string::npos);
+
+  const std::string png = dir.path("shot.png");
+  auto c = test::runCommand(
+      "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
+      "--force-device-scale-factor=1 --window-size=820,900 --virtual-time-budget=3000 "
+      "--user-data-dir=" +
+      quote(dir.path("profile")) + " --screenshot=" + quote(png) + " " +
+      quote("file://" + html + "#t=0&traces=0&robot=disc-7"));
+  ASSERT_EQ(c.code, 0) << c.err;
+  int w = 0, h = 0;
+  const auto px = readPng(png, w, h);
+  ASSERT_FALSE(px.empty());
+  auto colourAt = [&](size_t robot) {
+    const Vec2 at = viewerPixel(s, {s.robots[robot].start.x, s.robots[robot].start.y});
+    return px[size_t(std::lround(at.y)) * size_t(w) + size_t(std::lround(at.x))];
+  };
+  auto hex = [](const std::string& c, int at) {
+    return std::stoi(c.substr(1 + 2 * at, 2), nullptr, 16);
+  };
+  auto near = [&](Rgb got, const std::string& want, double alpha) {
+    // `want` at `alpha` over white.
+    const int rgb[3] = {got.r, got.g, got.b};
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(rgb[k] - (alpha * hex(want, k) + (1 - alpha) * 255)) > 24) return false;
+    return true;
+  };
+  EXPECT_TRUE(near(colourAt(7), robotColour(7), 1)) << "the robot named stands out";
+  for (size_t other : {3u, 20u}) {
+    EXPECT_TRUE(near(colourAt(other), robotColour(other), 0.25)) << "robot " << other << " fades";
   }
 }
 
