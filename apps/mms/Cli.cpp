@@ -466,14 +466,15 @@ Command addScenario(CLI::App& app) {
       "its mouth and turns half round about it in a bay barely larger than that turn), "
       "disc-grid (--seed, --robots, --spacing: unit discs on a grid go to the same grid moved "
       "aside), disc-triangles (--seed, --robots: unit discs among random triangles) or disc-box "
-      "(--seed, --robots: discs of radius 0.5 packed touching in a walled box, shuffled)",
+      "(--seed, --robots: discs of radius 0.5 packed touching in a walled box, shuffled) or "
+      "warehouse (--seed, --robots: rectangular carts among shelves turn where there is room)",
       [](CLI::App* scenarioCmd, ScenarioArgs& sa) {
         scenarioCmd
             ->add_option("NAME", sa.name,
                          "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
                          "carry-turn, niche-swap, niche-three, discs-swap, discs-room, "
-                         "open-clutter, bend, doors, keyhole, swallow, disc-grid, disc-triangles "
-                         "or disc-box")
+                         "open-clutter, bend, doors, keyhole, swallow, disc-grid, disc-triangles, "
+                         "disc-box or warehouse")
             ->required()
             ->check(CLI::IsMember(mms::scenarioNames()));
         outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");
@@ -490,7 +491,8 @@ Command addScenario(CLI::App& app) {
                 "--robots", sa.robots,
                 "random: 1 or 2 robots (default: from the seed); discs-room: how many discs "
                 "(default 10, at most 16); disc-grid, disc-triangles: how many discs (default "
-                "20, at most 2000); disc-box: how many discs (default 29, at most 2000)")
+                "20, at most 2000); disc-box: how many discs (default 29), warehouse: how "
+                "many carts (default 20), at most 2000")
             ->check(CLI::Range(1, 2000));
         scenarioCmd
             ->add_option("--spacing", sa.spacing,

@@ -87,8 +87,8 @@ def scenario(name: str, *, seed: int = 1, tightness: float = 0.0, slack: float |
     (slack), random (seed, robots, obstacles) and the generated families carry-turn (slack),
     niche-swap (slack), niche-three, discs-swap, discs-room (robots), open-clutter, bend, doors
     keyhole (slack) and swallow (slack) (seed), and many discs: disc-grid (robots, spacing: the
-    grid's centres apart in radii), disc-triangles (robots) and disc-box (robots: exact discs
-    packed touching in a walled box). translate names robots that only translate (each must keep its angle from
+    grid's centres apart in radii), disc-triangles (robots), disc-box (robots: exact discs
+    packed touching in a walled box) and warehouse (robots: rectangular carts among shelves). translate names robots that only translate (each must keep its angle from
     start to goal). Raises InputError for an unknown name or a setting out of range."""
     r = _mms.ScenarioRequest()
     r.name = _text(name, "mms.scenario: name")

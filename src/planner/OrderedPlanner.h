@@ -9,8 +9,9 @@
 // the route through its cell of the obstacles' slice (one per shape and angle,
 // manifolds/CellRoute.h); the route through an exact slice of a region round that route alone,
 // with the obstacles and standing robots reaching into it, the region grown until it joins
-// start and goal. Each is certified with the others held before it is taken, and the whole
-// path again at the end.
+// start and goal. A rigid robot that must turn (or cannot translate there) gets a few rounds
+// of the one-robot MMS among the obstacles and the standing robots. Each is certified with the
+// others held before it is taken, and the whole path again at the end.
 //
 // Order: passes over the robots not yet at their goal, those furthest along the robots' common
 // direction of travel first (a grid going to another grid empties from its front), until a
@@ -48,11 +49,11 @@ struct OrderedSettings {
 };
 
 struct OrderedStats {
-  size_t passes = 0, moves = 0, straightMoves = 0, routeMoves = 0, regionMoves = 0;
+  size_t passes = 0, moves = 0, straightMoves = 0, routeMoves = 0, regionMoves = 0, turnMoves = 0;
   size_t regionSlices = 0, baseSlices = 0, jointRobots = 0;  // jointRobots: left to the k-robot MMS
   PebbleStats pebbles;                                       // the shuffle, when it ran
-  double baseSliceSeconds = 0, routeSeconds = 0, regionSeconds = 0, pebbleSeconds = 0,
-         jointSeconds = 0, certifySeconds = 0, totalSeconds = 0;
+  double baseSliceSeconds = 0, routeSeconds = 0, regionSeconds = 0, turnSeconds = 0,
+         pebbleSeconds = 0, jointSeconds = 0, certifySeconds = 0, totalSeconds = 0;
   std::string noPath;
 };
 
@@ -72,6 +73,9 @@ class OrderedPlanner {
   struct ShapeSlice;
   std::vector<size_t> order() const;
   bool moveAlone(size_t robot, const Termination& stop);
+  bool translateAlone(size_t robot, const Termination& stop);
+  bool turnAlone(size_t robot, const Termination& stop);
+  Scene heldScene(const std::vector<size_t>& robots) const;
   bool take(size_t robot, const std::vector<Vec2>& route);
   ShapeSlice& sliceOf(size_t robot);
   Scene regionScene(size_t robot, const Box& region) const;

@@ -119,6 +119,7 @@ PlanStatistics statisticsOf(const OrderedStats& s) {
               {"straight_moves", s.straightMoves},
               {"route_moves", s.routeMoves},
               {"region_moves", s.regionMoves},
+              {"turn_moves", s.turnMoves},
               {"base_slices", s.baseSlices},
               {"region_slices", s.regionSlices},
               {"pebble_vertices", s.pebbles.vertices},
@@ -127,8 +128,9 @@ PlanStatistics statisticsOf(const OrderedStats& s) {
               {"pebble_moves", s.pebbles.moves},
               {"joint_robots", s.jointRobots}};
   p.phases = {{"base_slices", s.baseSliceSeconds}, {"routes", s.routeSeconds},
-              {"regions", s.regionSeconds},        {"pebbles", s.pebbleSeconds},
-              {"joint", s.jointSeconds},           {"certify", s.certifySeconds}};
+              {"regions", s.regionSeconds},        {"turns", s.turnSeconds},
+              {"pebbles", s.pebbleSeconds},        {"joint", s.jointSeconds},
+              {"certify", s.certifySeconds}};
   return p;
 }
 

@@ -18,7 +18,7 @@ const std::vector<std::string>& scenarioNames() {
       "assembly-2",  "random",         "carry-turn",      "niche-swap",
       "niche-three", "discs-swap",     "discs-room",      "open-clutter",
       "bend",        "doors",          "keyhole",         "swallow",
-      "disc-grid",   "disc-triangles", "disc-box"};
+      "disc-grid",   "disc-triangles", "disc-box",        "warehouse"};
   return names;
 }
 
@@ -91,6 +91,7 @@ Scene generate(const ScenarioRequest& r) {
   if (n == "disc-triangles")
     return discTrianglesScene(r.seed, r.robots > 0 ? size_t(r.robots) : 20);
   if (n == "disc-box") return discBoxScene(r.seed, r.robots > 0 ? size_t(r.robots) : 29);
+  if (n == "warehouse") return warehouseScene(r.seed, r.robots > 0 ? size_t(r.robots) : 20);
   if (n == "bend") return bendScene(r.seed);
   if (n == "doors") return doorsScene(r.seed);
   return randomPolygonsTwoRobots(r.seed);
@@ -109,8 +110,8 @@ Scene makeScenario(const ScenarioRequest& r, const std::string& prefix) {
                      didYouMean(r.name, scenarioNames()));
   requireRange(prefix, "tightness", r.tightness, 0, 0.999);
   requireRange(prefix, "slack", r.slack, 0.001, 1);
-  const bool manyDiscs =
-      r.name == "disc-grid" || r.name == "disc-triangles" || r.name == "disc-box";
+  const bool manyDiscs = r.name == "disc-grid" || r.name == "disc-triangles" ||
+                         r.name == "disc-box" || r.name == "warehouse";
   if (r.robots != 0) requireRange(prefix, "robots", r.robots, 1, manyDiscs ? 2000 : 16);
   if (r.spacing != 0) requireRange(prefix, "spacing", r.spacing, 2.05, 100);
   if (r.obstacles != -1) requireRange(prefix, "obstacles", r.obstacles, 0, 100000);

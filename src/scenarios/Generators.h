@@ -164,4 +164,11 @@ Scene discTrianglesScene(uint64_t seed, size_t count);
 /// (as multi-agent path finding benchmarks place them).
 Scene discBoxScene(uint64_t seed, size_t count);
 
+/// `count` rigid rectangular carts in a warehouse: rows of shelves, aisles between them too
+/// narrow for a cart to turn in but wide enough to pass a parked one, and cross-aisles where it
+/// can turn. Carts park along one side, lengthwise in the aisles or crosswise in the
+/// cross-aisles, facing either way; starts and goals are random places. Random per seed: the
+/// cart, the widths, the shelves.
+Scene warehouseScene(uint64_t seed, size_t count);
+
 }  // namespace mms
