@@ -64,6 +64,30 @@ TEST(View, SavedRoadmapReachesThePathFileAndThePage) {
   EXPECT_FALSE(std::filesystem::exists(dir.path("two.json")));
 }
 
+// The viewer page of the scene and path, written by `mms view` into `dir`.
+std::string viewPage(const Scene& s, const Path& p, TempDir& dir) {
+  const std::string sceneFile = dir.path("s.json"), pathFile = dir.path("p.json");
+  saveScene(s, sceneFile);
+  savePath(p, s, pathFile);
+  const std::string html = dir.path("v.html");
+  auto v = runMms("view " + quote(sceneFile) + " " + quote(pathFile) + " -o " + quote(html));
+  EXPECT_EQ(v.code, 0) << v.err;
+  return html;
+}
+
+// A headless browser's picture of the page at `hash`; empty on failure.
+std::vector<Rgb> screenshot(TempDir& dir, const std::string& html, const std::string& hash,
+                            const std::string& size, int& w, int& h) {
+  const std::string png = dir.path("shot.png");
+  auto c = test::runCommand(
+      "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
+      "--force-device-scale-factor=1 --window-size=" +
+      size + " --virtual-time-budget=3000 --user-data-dir=" + quote(dir.path("profile")) +
+      " --screenshot=" + quote(png) + " " + quote("file://" + html + "#" + hash));
+  EXPECT_EQ(c.code, 0) << c.err;
+  return c.code == 0 ? readPng(png, w, h) : std::vector<Rgb>{};
+}
+
 TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {
   const auto chromium = test::runCommand("command -v chromium");
   ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
@@ -79,30 +103,14 @@ TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {
   r.start = {3, 3, 0};
   r.goal = {17, 3, 0};
   s.robots.push_back(r);
-  const std::string sceneFile = dir.path("s.json");
-  saveScene(s, sceneFile);
   Path p;
   p.waypoints = {{3, 3, 0}, {17, 3, 0}};
-  const std::string pathFile = dir.path("p.json");
-  savePath(p, s, pathFile);
-  const std::string html = dir.path("v.html");
-  auto v = runMms("view " + quote(sceneFile) + " " + quote(pathFile) + " -o " + quote(html));
-  ASSERT_EQ(v.code, 0) << v.err;
+  const std::string html = viewPage(s, p, dir);
   const std::string page = test::readFile(html);
   for (const char* external : {"http://", "https://", " src=", " href=", "import("})
     EXPECT_EQ(page.find(external), std::string::npos)
         << "the page must be self-contained: " << external;
 
-  auto shot = [&](double t, const std::string& png) {
-    const std::string cmd =
-        "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
-        "--force-device-scale-factor=1 --window-size=820,500 "
-        "--virtual-time-budget=3000 --user-data-dir=" +
-        quote(dir.path("profile")) + " --screenshot=" + quote(png) + " " +
-        quote("file://" + html + "#t=" + std::to_string(t));
-    auto c = test::runCommand(cmd);
-    ASSERT_EQ(c.code, 0) << c.err;
-  };
   const Rgb robot{0xe8, 0x71, 0x0a};
   auto isRobot = [&](const std::vector<Rgb>& px, int w, Vec2 at) {
     const Rgb c = px[size_t(std::lround(at.y)) * size_t(w) + size_t(std::lround(at.x))];
@@ -110,10 +118,8 @@ TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {
            std::abs(c.b - robot.b) < 24;
   };
   for (double t : {0.0, 0.5, 1.0}) {
-    const std::string png = dir.path("shot.png");
-    shot(t, png);
     int w = 0, h = 0;
-    const auto px = readPng(png, w, h);
+    const auto px = screenshot(dir, html, "t=" + std::to_string(t), "820,500", w, h);
     ASSERT_FALSE(px.empty()) << "unreadable screenshot";
     const Vec2 expected = viewerPixel(s, {3 + 14 * t, 3});
     ASSERT_LT(expected.y, h);
@@ -147,29 +153,15 @@ TEST(View, ARobotNamedInTheLinkStandsOutAmongMany) {
     r.goal = {r.start.x + 1, r.start.y, 0};
     s.robots.push_back(r);
   }
-  const std::string sceneFile = dir.path("s.json");
-  saveScene(s, sceneFile);
   Path p;
   p.waypoints = {startConfig(s), goalConfig(s)};
-  const std::string pathFile = dir.path("p.json");
-  savePath(p, s, pathFile);
-  const std::string html = dir.path("v.html");
-  auto v = runMms("view " + quote(sceneFile) + " " + quote(pathFile) + " -o " + quote(html));
-  ASSERT_EQ(v.code, 0) << v.err;
+  const std::string html = viewPage(s, p, dir);
   const std::string page = test::readFile(html);
   EXPECT_NE(page.find("<details><summary>30 robots</summary>"), std::string::npos);
   EXPECT_NE(page.find("data-robot=\"29\""), std::string::npos);
 
-  const std::string png = dir.path("shot.png");
-  auto c = test::runCommand(
-      "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
-      "--force-device-scale-factor=1 --window-size=820,900 --virtual-time-budget=3000 "
-      "--user-data-dir=" +
-      quote(dir.path("profile")) + " --screenshot=" + quote(png) + " " +
-      quote("file://" + html + "#t=0&traces=0&robot=disc-7"));
-  ASSERT_EQ(c.code, 0) << c.err;
   int w = 0, h = 0;
-  const auto px = readPng(png, w, h);
+  const auto px = screenshot(dir, html, "t=0&traces=0&robot=disc-7", "820,900", w, h);
   ASSERT_FALSE(px.empty());
   auto colourAt = [&](size_t robot) {
     const Vec2 at = viewerPixel(s, {s.robots[robot].start.x, s.robots[robot].start.y});
