@@ -25,6 +25,20 @@ std::string points(const Ring& ring) {
   return s;
 }
 
+// A robot at a pose, or an obstacle: a disc as a circle, else its polygon (`attributes`
+// first, each followed by a space).
+std::string element(const Ring& ring, const Disc* disc, const std::string& attributes = "") {
+  if (disc)
+    return "<circle " + attributes + "cx=\"" + fmt(disc->center.x) + "\" cy=\"" +
+           fmt(disc->center.y) + "\" r=\"" + fmt(disc->radius) + "\"/>";
+  return "<polygon " + attributes + "points=\"" + points(ring) + "\"/>";
+}
+std::string robotAt(const Robot& r, const Pose& p, const std::string& attributes = "") {
+  const Disc d{{p.x, p.y}, r.disc};
+  return element(r.disc > 0 ? Ring{} : placedRing(r.shape, p), r.disc > 0 ? &d : nullptr,
+                 attributes);
+}
+
 // Cumulative motion along the path (sum over robots of |dp| + radius * |dtheta|), used to
 // space ghosts and to time the animation by distance rather than by waypoint count.
 std::vector<double> cumulativeEffort(const Scene& scene, const Path& path) {
@@ -135,10 +149,7 @@ void drawTraces(std::ostringstream& svg, const Scene& scene, const Path& path, c
       << "stroke-width=\"" << fmt(0.6 * stroke) << "\">\n";
   for (int g = 1; g < o.ghosts && total > 0; ++g)
     for (size_t i = 0; i < k; ++i)
-      svg << "<polygon points=\""
-          << points(placedRing(scene.robots[i].shape,
-                               poseAtEffort(path, acc, i, total * g / o.ghosts)))
-          << "\"/>\n";
+      svg << robotAt(scene.robots[i], poseAtEffort(path, acc, i, total * g / o.ghosts)) << "\n";
   svg << "</g>\n";
 }
 
@@ -174,9 +185,11 @@ void drawAnimation(std::ostringstream& svg, const Scene& scene, const Path& path
         << "<g transform=\"rotate(" << fmt(p0.theta * 180 / M_PI) << ")\">"
         << "<animateTransform attributeName=\"transform\" type=\"rotate\" values=\"" << turns
         << "\" " << timing << "/>\n"
-        << "<polygon fill=\"" << (k >= 2 ? robotColour(i) : "#f2b01e")
-        << "\" fill-opacity=\"0.9\" stroke=\"#333\" stroke-width=\"" << fmt(stroke)
-        << "\" points=\"" << points(scene.robots[i].shape) << "\"/>\n</g></g>\n";
+        << robotAt(scene.robots[i], {0, 0, 0},
+                   "fill=\"" + std::string(k >= 2 ? robotColour(i) : "#f2b01e") +
+                       "\" fill-opacity=\"0.9\" stroke=\"#333\" stroke-width=\"" + fmt(stroke) +
+                       "\" ")
+        << "\n</g></g>\n";
   }
   svg << "</g>\n";
 }
@@ -224,7 +237,8 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
       << fmt(2 * stroke) << "\"/>\n";
   svg << "<g id=\"obstacles\" fill=\"#4a74b4\" stroke=\"#23406e\" stroke-width=\"" << fmt(stroke)
       << "\">\n";
-  for (const Ring& ob : scene.obstacles) svg << "<polygon points=\"" << points(ob) << "\"/>\n";
+  for (size_t i = 0; i < scene.obstacles.size(); ++i)
+    svg << element(scene.obstacles[i], scene.obstacleDisc(i)) << "\n";
   svg << "</g>\n";
 
   drawOverlays(svg, o, stroke);
@@ -233,13 +247,11 @@ std::string renderSvg(const Scene& scene, const Path* path, const SvgOptions& o)
   svg << "<g id=\"starts\" fill=\"#2ca02c\" fill-opacity=\"0.55\" stroke=\"#1a631a\" "
          "stroke-width=\""
       << fmt(stroke) << "\">\n";
-  for (const Robot& r : scene.robots)
-    svg << "<polygon points=\"" << points(placedRing(r.shape, r.start)) << "\"/>\n";
+  for (const Robot& r : scene.robots) svg << robotAt(r, r.start) << "\n";
   svg << "</g>\n<g id=\"goals\" fill=\"#d62728\" fill-opacity=\"0.55\" stroke=\"#7f1516\" "
          "stroke-width=\""
       << fmt(stroke) << "\">\n";
-  for (const Robot& r : scene.robots)
-    svg << "<polygon points=\"" << points(placedRing(r.shape, r.goal)) << "\"/>\n";
+  for (const Robot& r : scene.robots) svg << robotAt(r, r.goal) << "\n";
   svg << "</g>\n";
 
   if (path && !path->waypoints.empty() && o.animate)

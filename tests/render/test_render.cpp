@@ -144,3 +144,21 @@ TEST(Render, ManyRobotsMovingInTurnAnimateWithTheirOwnKeyFrames) {
   }
   EXPECT_EQ(animations, s.robots.size());
 }
+
+// Exact discs are drawn as circles, robots (start, goal, ghosts, the moving one) and obstacles
+// alike; polygons stay polygons.
+TEST(Render, DiscsAreDrawnAsCircles) {
+  Scene s = discBoxScene(3, 6);
+  s.addObstacleDisc({{s.bounds.xmin + 0.5, s.bounds.ymin + 0.5}, 0.25});
+  Path p;
+  p.waypoints = {startConfig(s), goalConfig(s)};  // drawn, not checked
+  SvgOptions o;
+  o.ghosts = 3;
+  const std::string svg = renderSvg(s, &p, o);
+  size_t circles = 0, polygons = 0;
+  for (size_t at = 0; (at = svg.find("<circle", at)) != std::string::npos; ++at) ++circles;
+  for (size_t at = 0; (at = svg.find("<polygon", at)) != std::string::npos; ++at) ++polygons;
+  // Six robots at start and goal, as ghosts (two each) and moving, and one disc obstacle.
+  EXPECT_EQ(circles, 6u * 5 + 1) << svg.substr(0, 400);
+  EXPECT_EQ(polygons, 4u) << "the box's four walls";
+}
