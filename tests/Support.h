@@ -12,6 +12,7 @@
 
 #include "mms/Geometry.h"
 #include "mms/Scene.h"
+#include "scenarios/Generators.h"
 
 namespace mms::test {
 
@@ -27,10 +28,8 @@ inline int seedsToRun(int seeds) { return kSanitized ? 1 : seeds; }
 /// A planner test's time limit: generous under the sanitizers.
 inline double planSeconds(double seconds) { return kSanitized ? 10 * seconds : seconds; }
 inline std::string scenario(const std::string& rel) { return sourceDir() + "/scenes/" + rel; }
-/// The axis-aligned rectangle [x0, x1] x [y0, y1], counter-clockwise.
-inline Ring rect(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
+/// The axis-aligned rectangle [x0, x1] x [y0, y1], counter-clockwise: the generators' own.
+using mms::rect;
 
 /// A wall across the whole box parts the left half from the right; robot "a" only translates
 /// and has its goal across the wall, so no motion exists. The other robots (rigid squares,

@@ -134,7 +134,6 @@ class StraightMotion {
       if (!pair(i, j)) return;
   }
 
- private:
  public:
   /// Every moving robot is a disc: a translating disc sweeps a stadium, and sweep() tests the
   /// whole motion at once, exactly, instead of piece by piece (which along a contact needs

@@ -113,9 +113,16 @@ double gap(const Placed& a, const Placed& b, double bound) {
   }
   return std::min(bound, std::max(0.0, d));
 }
-}  // namespace
 
-namespace {
+// How far a disc of radius r about v (a point when r is 0) keeps inside the bounds, 0 when it
+// does not.
+double boundsGap(const Box& bounds, Vec2 v, double r) {
+  const double d = std::min(std::min(v.x - bounds.xmin, bounds.xmax - v.x),
+                            std::min(v.y - bounds.ymin, bounds.ymax - v.y)) -
+                   r;
+  return std::max(0.0, d);
+}
+
 Placed asPlaced(const Ring& ring, const Disc& disc, const Box& box) {
   return disc.radius > 0 ? Placed{nullptr, disc, box} : Placed{&ring, {}, box};
 }
@@ -128,6 +135,15 @@ Placed placeRobot(const CollisionChecker& checker, double disc, size_t robot, co
   }
   transformRing(checker.shrunkShape(robot), pose, buffer);
   return {&buffer, {}, boundingBox(buffer)};
+}
+
+// Distance between the segment ab and a closed polygon (0 when they meet).
+double segmentRingDistance(Vec2 a, Vec2 b, const Ring& ring, double bound) {
+  if (insideRing(ring, a)) return 0;
+  double d = bound;
+  for (size_t i = 0, j = ring.size() - 1; i < ring.size() && d > 0; j = i++)
+    d = std::min(d, segmentSegmentDistance(a, b, ring[j], ring[i]));
+  return d;
 }
 }  // namespace
 
@@ -181,16 +197,10 @@ CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const
                                                              double bound) const {
   const Placed a = placeRobot(*this, discs_[robot], robot, pose, placedA);
   Clearance c{bound, {Contact::Kind::Bounds, 0}};
-  auto toBounds = [&](Vec2 v, double r) {
-    const double d = std::min(std::min(v.x - bounds_.xmin, bounds_.xmax - v.x),
-                              std::min(v.y - bounds_.ymin, bounds_.ymax - v.y)) -
-                     r;
-    c.distance = std::min(c.distance, std::max(0.0, d));
-  };
   if (a.ring)
-    for (Vec2 v : *a.ring) toBounds(v, 0);
+    for (Vec2 v : *a.ring) c.distance = std::min(c.distance, boundsGap(bounds_, v, 0));
   else
-    toBounds(a.disc.center, a.disc.radius);
+    c.distance = std::min(c.distance, boundsGap(bounds_, a.disc.center, a.disc.radius));
   for (size_t i = 0; i < obstacles_.size() && c.distance > 0; ++i) {
     const double d =
         gap(a, asPlaced(obstacles_[i], obstacleDiscs_[i], obstacleBoxes_[i]), c.distance);
@@ -205,28 +215,12 @@ double CollisionChecker::robotsDistance(size_t a, const Pose& pa, size_t b, cons
              placeRobot(*this, discs_[b], b, pb, placedB), bound);
 }
 
-namespace {
-// Distance between the segment ab and a closed polygon (0 when they meet).
-double segmentRingDistance(Vec2 a, Vec2 b, const Ring& ring, double bound) {
-  if (insideRing(ring, a)) return 0;
-  double d = bound;
-  for (size_t i = 0, j = ring.size() - 1; i < ring.size() && d > 0; j = i++)
-    d = std::min(d, segmentSegmentDistance(a, b, ring[j], ring[i]));
-  return d;
-}
-}  // namespace
-
 CollisionChecker::Clearance CollisionChecker::sweptDiscClearance(size_t robot, Vec2 a, Vec2 b,
                                                                  double bound) const {
   const double r = discs_[robot];
   Clearance c{bound, {Contact::Kind::Bounds, 0}};
   // The bounds are convex: the stadium is inside them when both end discs are.
-  for (Vec2 v : {a, b}) {
-    const double d = std::min(std::min(v.x - bounds_.xmin, bounds_.xmax - v.x),
-                              std::min(v.y - bounds_.ymin, bounds_.ymax - v.y)) -
-                     r;
-    c.distance = std::min(c.distance, std::max(0.0, d));
-  }
+  for (Vec2 v : {a, b}) c.distance = std::min(c.distance, boundsGap(bounds_, v, r));
   const Box swept{std::min(a.x, b.x) - r, std::min(a.y, b.y) - r, std::max(a.x, b.x) + r,
                   std::max(a.y, b.y) + r};
   for (size_t i = 0; i < obstacles_.size() && c.distance > 0; ++i) {

@@ -173,6 +173,15 @@ bool OrderedPlanner::translateAlone(size_t robot, const Termination& stop) {
   return false;
 }
 
+// Where every robot stands now, but `robots` placed as the sub-scene's configuration `sub`
+// places them (its robot m is robots[m]).
+Config OrderedPlanner::withMoved(const std::vector<size_t>& robots, const Config& sub) const {
+  Config full = q_;
+  for (size_t m = 0; m < robots.size(); ++m)
+    for (size_t c = 0; c < 3; ++c) full[3 * robots[m] + c] = sub[3 * m + c];
+  return full;
+}
+
 // The scene of `robots` from where they stand, the others obstacles where they stand (a disc an
 // exact disc).
 Scene OrderedPlanner::heldScene(const std::vector<size_t>& robots) const {
@@ -203,20 +212,14 @@ bool OrderedPlanner::turnAlone(size_t robot, const Termination& stop) {
   if (scene_.robots[robot].motion != Motion::Rigid) return false;
   const TimeCharge charge(stats_.turnSeconds);
   const Scene sub = heldScene({robot});
-  OneRobotSettings s;
-  s.seed = settings_.seed;
-  s.threads = settings_.threads;
   std::atomic<bool> enough{false};
-  OneRobotPlanner p(sub, 0, s);
+  OneRobotPlanner p(sub, 0, seeded(OneRobotSettings{}));
   const OneRobotResult res =
       p.solve(sub.robots[0].start, sub.robots[0].goal, stop.endingAlsoOn(&enough),
               [&](const OneRobotStats& st) { enough = st.rounds >= kTurnRounds; });
   if (res.status != PlanStatus::Found) return false;
-  for (size_t k = 1; k < res.waypoints.size(); ++k) {
-    Config full = q_;
-    for (size_t c = 0; c < 3; ++c) full[3 * robot + c] = res.waypoints[k][c];
-    path_.push_back(std::move(full));
-  }
+  for (size_t k = 1; k < res.waypoints.size(); ++k)
+    path_.push_back(withMoved({robot}, res.waypoints[k]));
   q_ = path_.back();
   ++stats_.turnMoves;
   return true;
@@ -238,18 +241,13 @@ bool OrderedPlanner::planJointly(std::vector<size_t> robots, bool othersAsObstac
   stats_.jointRobots = robots.size();
   std::vector<Config> w;
   PlanStatus status = PlanStatus::NotFound;
-  // The recursive MMS for that many robots, with this planner's seed and threads.
-  auto settings = [&](auto s) {
-    s.seed = settings_.seed;
-    s.threads = settings_.threads;
-    return s;
-  };
+  // The recursive MMS for that many robots.
   auto heldHere = [&](auto s) {
     s.maxRounds = rounds;
-    return settings(s);
+    return seeded(s);
   };
   if (robots.size() == 1) {
-    OneRobotPlanner p(sub, 0, settings(OneRobotSettings{}));
+    OneRobotPlanner p(sub, 0, seeded(OneRobotSettings{}));
     const OneRobotResult res = p.solve(sub.robots[0].start, sub.robots[0].goal, stop);
     status = res.status, w = res.waypoints;
   } else if (robots.size() == 2) {
@@ -260,12 +258,7 @@ bool OrderedPlanner::planJointly(std::vector<size_t> robots, bool othersAsObstac
     status = res.status, w = std::move(res.waypoints);
   }
   if (status != PlanStatus::Found) return false;
-  for (const Config& sq : w) {
-    Config full = q_;
-    for (size_t m = 0; m < robots.size(); ++m)
-      for (size_t c = 0; c < 3; ++c) full[3 * robots[m] + c] = sq[3 * m + c];
-    path_.push_back(std::move(full));
-  }
+  for (const Config& sq : w) path_.push_back(withMoved(robots, sq));
   q_ = path_.back();
   for (size_t i : robots) atGoal_[i] = true;
   return true;

@@ -76,6 +76,14 @@ class OrderedPlanner {
   bool translateAlone(size_t robot, const Termination& stop);
   bool turnAlone(size_t robot, const Termination& stop);
   Scene heldScene(const std::vector<size_t>& robots) const;
+  Config withMoved(const std::vector<size_t>& robots, const Config& sub) const;
+  /// A sub-planner's settings with this planner's seed and threads.
+  template <class Settings>
+  Settings seeded(Settings s) const {
+    s.seed = settings_.seed;
+    s.threads = settings_.threads;
+    return s;
+  }
   bool take(size_t robot, const std::vector<Vec2>& route);
   ShapeSlice& sliceOf(size_t robot);
   Scene regionScene(size_t robot, const Box& region) const;

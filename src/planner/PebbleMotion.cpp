@@ -26,6 +26,29 @@ struct Graph {
   std::vector<std::vector<Edge>> out;
 };
 
+// Points hashed into square cells of a side, for the points near a point: those in the cells up
+// to two away (everything within two sides, and some further).
+class PointGrid {
+ public:
+  explicit PointGrid(double side) : side_(side) {}
+  void add(Vec2 p, uint32_t id) { cells_[cell(p)].push_back(id); }
+  template <class Visit>
+  void near(Vec2 p, const Visit& visit) const {
+    const auto [cx, cy] = cell(p);
+    for (long long dx = -2; dx <= 2; ++dx)
+      for (long long dy = -2; dy <= 2; ++dy)
+        if (const auto it = cells_.find({cx + dx, cy + dy}); it != cells_.end())
+          for (uint32_t id : it->second) visit(id);
+  }
+
+ private:
+  std::pair<long long, long long> cell(Vec2 p) const {
+    return {std::llround(std::floor(p.x / side_)), std::llround(std::floor(p.y / side_))};
+  }
+  double side_;
+  std::map<std::pair<long long, long long>, std::vector<uint32_t>> cells_;
+};
+
 // One robot-width: two robots of the shape this far apart never overlap.
 double width(const Scene& scene) {
   const Robot& r = scene.robots[0];
@@ -47,20 +70,14 @@ std::vector<Vec2> placements(const Scene& scene, const CollisionChecker& checker
                              const Config& from, size_t maxVertices) {
   const double s = width(scene), theta = from[2];
   std::vector<Vec2> at;
-  std::map<std::pair<long long, long long>, std::vector<size_t>> cells;  // of side s
-  auto cell = [&](Vec2 p) {
-    return std::pair(std::llround(std::floor(p.x / s)), std::llround(std::floor(p.y / s)));
-  };
+  PointGrid grid(s);
   auto within = [&](Vec2 p, double d, auto&& visit) {
-    const auto [cx, cy] = cell(p);
-    for (long long dx = -2; dx <= 2; ++dx)
-      for (long long dy = -2; dy <= 2; ++dy)
-        if (const auto it = cells.find({cx + dx, cy + dy}); it != cells.end())
-          for (size_t v : it->second)
-            if (norm(at[v] - p) < d) visit(v);
+    grid.near(p, [&](uint32_t v) {
+      if (norm(at[v] - p) < d) visit(v);
+    });
   };
   auto add = [&](Vec2 p) {
-    cells[cell(p)].push_back(at.size());
+    grid.add(p, uint32_t(at.size()));
     at.push_back(p);
   };
   for (size_t i = 0; i < scene.robots.size(); ++i) add({from[3 * i], from[3 * i + 1]});
@@ -112,25 +129,15 @@ Graph build(const Scene& scene, const Config& from, std::vector<Vec2> at, size_t
   g.at = std::move(at);
   const size_t n = g.at.size();
   g.out.resize(n);
-  std::map<std::pair<long long, long long>, std::vector<uint32_t>> cells;
-  auto cell = [&](Vec2 p) {
-    return std::pair(std::llround(std::floor(p.x / reach)), std::llround(std::floor(p.y / reach)));
-  };
-  for (uint32_t v = 0; v < n; ++v) cells[cell(g.at[v])].push_back(v);
-  auto near = [&](Vec2 p, auto&& visit) {
-    const auto [cx, cy] = cell(p);
-    for (long long dx = -2; dx <= 2; ++dx)
-      for (long long dy = -2; dy <= 2; ++dy)
-        if (const auto it = cells.find({cx + dx, cy + dy}); it != cells.end())
-          for (uint32_t w : it->second) visit(w);
-  };
+  PointGrid grid(reach);
+  for (uint32_t v = 0; v < n; ++v) grid.add(g.at[v], v);
   for (uint32_t u = 0; u < n && !stop(); ++u)
-    near(g.at[u], [&](uint32_t v) {
+    grid.near(g.at[u], [&](uint32_t v) {
       const Vec2 a = g.at[u], b = g.at[v];
       if (v <= u || norm(b - a) > reach) return;
       if (!motionFree(aloneChecker, {a.x, a.y, theta}, {b.x, b.y, theta})) return;
       Edge e{v, norm(b - a), {}};
-      near(a + 0.5 * (b - a), [&](uint32_t w) {
+      grid.near(a + 0.5 * (b - a), [&](uint32_t w) {
         if (w == u || pointSegmentDistance(g.at[w], a, b) >= s) return;
         const Vec2 c = g.at[w];
         if (w == v || !motionFree(pairChecker, {a.x, a.y, theta, c.x, c.y, theta},
@@ -173,6 +180,13 @@ double shortestEdge(const Graph& g) {
 
 using State = std::u16string;  // each robot's vertex
 
+// A move along e is legal when no robot stands where the move would meet it.
+bool clearOf(const Edge& e, const std::vector<int>& occupant) {
+  for (uint32_t w : e.blockers)
+    if (occupant[w] >= 0) return false;
+  return true;
+}
+
 // `count` legal moves of robots chosen at random, none undoing the one before.
 std::vector<std::pair<size_t, uint32_t>> randomWalk(const Graph& g, const State& from, size_t count,
                                                     Random& rng) {
@@ -184,11 +198,9 @@ std::vector<std::pair<size_t, uint32_t>> randomWalk(const Graph& g, const State&
   for (size_t n = 0; n < count; ++n) {
     legal.clear();
     for (size_t i = 0; i < s.size(); ++i)
-      for (const Edge& e : g.out[s[i]]) {
-        bool clear = !(steps.size() && steps.back().first == i);
-        for (uint32_t w : e.blockers) clear = clear && occupant[w] < 0;
-        if (clear) legal.emplace_back(i, e.to);
-      }
+      for (const Edge& e : g.out[s[i]])
+        if (!(steps.size() && steps.back().first == i) && clearOf(e, occupant))
+          legal.emplace_back(i, e.to);
     if (legal.empty()) break;
     const auto [robot, to] = legal[rng.below(legal.size())];
     occupant[s[robot]] = -1;
@@ -246,9 +258,7 @@ struct Search {
       for (size_t i = 0; i < s.size(); ++i) occupant[s[i]] = int(i);
       for (size_t i = 0; i < s.size(); ++i)
         for (const Edge& e : g.out[s[i]]) {
-          bool clear = true;
-          for (uint32_t w : e.blockers) clear = clear && occupant[w] < 0;
-          if (!clear) continue;
+          if (!clearOf(e, occupant)) continue;
           State t = s;
           t[i] = char16_t(e.to);
           if (index.count(t)) continue;
@@ -297,7 +307,8 @@ std::optional<std::vector<Config>> pebbleMotion(const Scene& scene, const Collis
   stats.vertices = g.at.size();
   for (const auto& out : g.out) stats.edges += out.size();
   if (stop() || g.at.size() > 0xffff) return std::nullopt;
-  // Vertices 0.. are where the robots stand, in robot order, repeated ones merged; goals next.
+  // Vertex i is where robot i stands; a goal is the first vertex at its place (a robot's, or
+  // its own after them).
   auto vertexOf = [&](Vec2 p) {
     for (uint32_t v = 0; v < g.at.size(); ++v)
       if (g.at[v] == p) return v;
@@ -307,24 +318,23 @@ std::optional<std::vector<Config>> pebbleMotion(const Scene& scene, const Collis
   State start;
   std::map<uint32_t, std::vector<double>> byGoal;
   for (size_t i = 0; i < scene.robots.size(); ++i) {
-    start.push_back(char16_t(vertexOf({from[3 * i], from[3 * i + 1]})));
+    start.push_back(char16_t(i));
     const uint32_t goal = vertexOf({scene.robots[i].goal.x, scene.robots[i].goal.y});
     if (!byGoal.count(goal)) byGoal[goal] = distancesTo(g, goal);
     search.dist.push_back(byGoal[goal]);
   }
   // Searches of a bounded size, each from where the last came nearest the goal: a crowd that
   // must make way for one robot is searched around that robot's progress, not all at once.
-  if (!std::isfinite(search.h(start))) return std::nullopt;
+  double best = search.h(start);
+  if (!std::isfinite(best)) return std::nullopt;
   std::vector<std::pair<size_t, uint32_t>> moves;
   State now = start;
-  const size_t legStates = settings.legStates;
   size_t walk = 0;
-  double best = search.h(start);
   Random rng(settings.seed);
   search.done = 0.5 * shortestEdge(g);
-  for (double left = search.h(start); left > search.done;) {
+  for (double left = best; left > search.done;) {
     if (stats.states >= settings.maxStates || stop()) return std::nullopt;
-    const size_t budget = std::min(legStates, settings.maxStates - stats.states);
+    const size_t budget = std::min(settings.legStates, settings.maxStates - stats.states);
     Search::Leg leg = search.run(now, settings.weight, budget, stop);
     stats.states += search.states.size();
     if (leg.h >= left) {

@@ -162,11 +162,11 @@ Scene randomPolygonsTwoRobots(uint64_t seed) {
   return s;
 }
 
-namespace {
-
 Ring rect(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
+
+namespace {
 
 // A ring of outer radius R and inner radius r with a slot of width w cut along +x: the
 // Pacman. Counter-clockwise: the outer arc one way, the inner arc back.

@@ -10,25 +10,21 @@ namespace mms {
 
 namespace {
 
-Ring box(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
 // The chamber's walls: the bounding box's rectangles around the rooms and slots, and the four
 // corners cut off the chamber's square so that it is an octagon of inscribed radius a.
 std::vector<Ring> keyholeWalls(double a, double slot, double ex, double ey, double thick,
                                double room, double wall) {
   const double right = a + thick + room, low = -a - thick - room, d = a * std::sqrt(2.0) - a;
-  std::vector<Ring> walls{box(-a - wall, a, right + wall, a + wall),  // top
-                          box(-a - wall, low - wall, -a, a),          // left
-                          box(-a, low - wall, right + wall, low),     // bottom
-                          box(-a, -a - thick, ex - slot / 2, -a),     // floor, left of the keyhole
-                          box(ex + slot / 2, -a - thick, a, -a),      // floor, right of it
-                          box(a, low, right + wall, -a),              // below the goal's room
-                          box(a, -a, a + thick, ey - slot / 2),       // side wall, below the exit
-                          box(a, ey + slot / 2, a + thick, a),        // side wall, above it
-                          box(right, -a, right + wall, a),            // right
-                          {{a, d}, {a, a}, {d, a}},                   // the chamber's corners
+  std::vector<Ring> walls{rect(-a - wall, a, right + wall, a + wall),  // top
+                          rect(-a - wall, low - wall, -a, a),          // left
+                          rect(-a, low - wall, right + wall, low),     // bottom
+                          rect(-a, -a - thick, ex - slot / 2, -a),     // floor, left of the keyhole
+                          rect(ex + slot / 2, -a - thick, a, -a),      // floor, right of it
+                          rect(a, low, right + wall, -a),              // below the goal's room
+                          rect(a, -a, a + thick, ey - slot / 2),       // side wall, below the exit
+                          rect(a, ey + slot / 2, a + thick, a),        // side wall, above it
+                          rect(right, -a, right + wall, a),            // right
+                          {{a, d}, {a, a}, {d, a}},                    // the chamber's corners
                           {{-d, a}, {-a, a}, {-a, d}},
                           {{-a, -d}, {-a, -a}, {-d, -a}},
                           {{d, -a}, {a, -a}, {a, -d}}};

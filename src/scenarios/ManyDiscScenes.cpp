@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <string>
 
 #include "geometry/PolygonOps.h"
@@ -134,15 +133,8 @@ Scene discBoxScene(uint64_t seed, size_t count) {
   const size_t cols =
       std::max<size_t>(2, size_t(std::ceil(std::sqrt(double(count + holes) * aspect))));
   const size_t rows = std::max<size_t>(2, (count + holes + cols - 1) / cols);
-  std::vector<size_t> cells(cols * rows);
-  std::iota(cells.begin(), cells.end(), 0);
-  auto shuffled = [&] {
-    std::vector<size_t> c = cells;
-    for (size_t i = c.size(); i > 1; --i) std::swap(c[i - 1], c[rng.below(i)]);
-    c.resize(count);
-    return c;
-  };
-  const std::vector<size_t> starts = shuffled(), goals = shuffled();
+  const std::vector<size_t> starts = rng.sample(cols * rows, count),
+                            goals = rng.sample(cols * rows, count);
   // The whole box turned by an angle from the seed: its walls are obstacles, the bounds the box
   // round them.
   const double turn = rng.uniform(0, 2 * M_PI), c = std::cos(turn), s = std::sin(turn);

@@ -11,10 +11,6 @@ namespace mms {
 
 namespace {
 
-Ring rectangle(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
 // Grid scenes snap rectangles to a coarse lattice that includes the bounds, so edges coincide
 // exactly (in doubles: lattice values are computed the same way everywhere).
 struct Lattice {
@@ -28,13 +24,13 @@ Ring latticeRectangle(Random& rng, const Lattice& g) {
   const int i = int(rng.below(g.n)), j = int(rng.below(g.n));
   const int w = 1 + int(rng.below(std::min(3, g.n - i))),
             h = 1 + int(rng.below(std::min(3, g.n - j)));
-  return rectangle(g.x(i), g.y(j), g.x(i + w), g.y(j + h));
+  return rect(g.x(i), g.y(j), g.x(i + w), g.y(j + h));
 }
 
 Ring robotShape(Random& rng, double size, bool box) {
   if (box) {
     const double w = size * rng.uniform(0.5, 1), h = size * rng.uniform(0.2, 1);
-    return rectangle(-w / 2, -h / 2, w / 2, h / 2);
+    return rect(-w / 2, -h / 2, w / 2, h / 2);
   }
   return randomStarPolygon(rng, {0, 0}, 0.3 * size / 2, size / 2, 3 + int(rng.below(8)));
 }
@@ -97,7 +93,7 @@ Scene randomScene(const RandomSceneSettings& s) {
     r.name = robots == 1 ? "robot" : std::string(1, char('a' + i));
     r.motion = rng.uniform() < 0.3 ? Motion::Translate : Motion::Rigid;
     const bool exactFit = grid && rng.uniform() < 0.3;
-    r.shape = exactFit ? rectangle(-step / 2, -step, step / 2, step)
+    r.shape = exactFit ? rect(-step / 2, -step, step / 2, step)
                        : robotShape(rng, std::min(w, h) * rng.uniform(0.04, 0.25) * crowding,
                                     rng.uniform() < 0.4);
     scene.robots.push_back(r);

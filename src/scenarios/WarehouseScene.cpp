@@ -17,10 +17,6 @@ struct Slot {
   double theta;
 };
 
-Ring rectangle(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
 }  // namespace
 
 Scene warehouseScene(uint64_t seed, size_t count) {
@@ -49,8 +45,7 @@ Scene warehouseScene(uint64_t seed, size_t count) {
     const double y = double(r) * (depth + aisle);  // the aisle's lower edge
     for (size_t s = 0; s < segments; ++s) {
       const double x0 = cross + double(s) * (shelf + cross);
-      if (r < rows)
-        scene.obstacles.push_back(rectangle(x0, y + aisle, x0 + shelf, y + aisle + depth));
+      if (r < rows) scene.obstacles.push_back(rect(x0, y + aisle, x0 + shelf, y + aisle + depth));
       for (size_t k = 0; k < perShelf; ++k)
         slots.push_back({{x0 + pitch * (double(k) + 0.5), y + gap + wid / 2}, 0});
     }
@@ -62,15 +57,9 @@ Scene warehouseScene(uint64_t seed, size_t count) {
   }
   // Starts and goals: distinct places each, drawn without replacement; a cart may face either
   // way along its aisle.
-  auto draw = [&] {
-    std::vector<size_t> idx(slots.size());
-    for (size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-    for (size_t i = idx.size(); i > 1; --i) std::swap(idx[i - 1], idx[rng.below(i)]);
-    idx.resize(count);
-    return idx;
-  };
-  const std::vector<size_t> starts = draw(), goals = draw();
-  const Ring cart = rectangle(-len / 2, -wid / 2, len / 2, wid / 2);
+  const std::vector<size_t> starts = rng.sample(slots.size(), count),
+                            goals = rng.sample(slots.size(), count);
+  const Ring cart = rect(-len / 2, -wid / 2, len / 2, wid / 2);
   for (size_t i = 0; i < count; ++i) {
     Robot r;
     r.name = "cart-" + std::to_string(i);

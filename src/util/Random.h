@@ -3,6 +3,8 @@
 // by the standard, but the std distributions are not, so we map its bits ourselves.
 #include <cstdint>
 #include <random>
+#include <utility>
+#include <vector>
 
 namespace mms {
 
@@ -15,6 +17,15 @@ class Random {
   /// Uniform integer in [0, n).
   uint64_t below(uint64_t n) { return uint64_t(uniform() * double(n)) % n; }
   uint64_t bits() { return engine_(); }
+  /// `count` of 0 .. n-1 in random order, none twice: the first `count` of a shuffle
+  /// (Fisher-Yates from the back).
+  std::vector<size_t> sample(size_t n, size_t count) {
+    std::vector<size_t> out(n);
+    for (size_t i = 0; i < n; ++i) out[i] = i;
+    for (size_t i = n; i > 1; --i) std::swap(out[i - 1], out[below(i)]);
+    out.resize(count);
+    return out;
+  }
 
  private:
   std::mt19937_64 engine_;
