@@ -55,6 +55,7 @@ class Optimizer {
       for (size_t a = 0; a < settings_.attempts && !done() && w.size() >= 2; ++a)
         shortcut(w, /*partial=*/rng_.below(3) != 0);
       dropStraightWaypoints(w);
+      changed();
       if (s_.accepted > before) turnShortWay(w);  // shortcuts may have joined turns
       const double now = pathCost(checker_, w);
       ++s_.rounds;
@@ -162,8 +163,10 @@ class Optimizer {
     const std::vector<double> cum = cumulativeCost(w);
     const std::vector<Rewind> candidates = rewinds(w, runs, c);
     spinPlaces_.clear();
-    return rewindPass(w, robot, runs, cum, candidates, false) ||
-           rewindPass(w, robot, runs, cum, candidates, true);
+    const bool taken = rewindPass(w, robot, runs, cum, candidates, false) ||
+                       rewindPass(w, robot, runs, cum, candidates, true);
+    changed();
+    return taken;
   }
 
   bool rewindPass(std::vector<Config>& w, size_t robot, const std::vector<Run>& runs,
@@ -321,31 +324,41 @@ class Optimizer {
     return w[at][c] + 2 * M_PI * r.turns * added;
   }
 
-  // The index of a waypoint at arc parameter `s` (cumulative cost), inserted on its segment
-  // when none is there: the path's motion is unchanged.
-  size_t pointAt(std::vector<Config>& w, const std::vector<double>& cum, double s) {
+  // The cost of the path up to each waypoint, kept until the path changes (`changed`): with
+  // hundreds of robots and a waypoint per move it costs as much as a copy of the path.
+  const std::vector<double>& cumulativeCost(const std::vector<Config>& w) {
+    if (cumVersion_ == version_ && cum_.size() == w.size()) return cum_;
+    cum_.assign(1, 0.0);
+    for (size_t k = 1; k < w.size(); ++k)
+      cum_.push_back(cum_.back() + segmentCost(checker_, w[k - 1], w[k]));
+    cumVersion_ = version_;
+    return cum_;
+  }
+  void changed() { ++version_; }
+
+  // A point of the path at arc parameter `s` (cumulative cost): waypoint `k`, or when none is
+  // there, `q` on the segment that ends at waypoint `k`.
+  struct At {
+    size_t k;
+    bool inserted;
+    Config q;
+  };
+  static At at(const std::vector<Config>& w, const std::vector<double>& cum, double s) {
     size_t j = size_t(std::upper_bound(cum.begin(), cum.end(), s) - cum.begin());
     j = std::clamp<size_t>(j, 1, w.size() - 1);  // s lies on segment (j - 1, j)
     const double length = cum[j] - cum[j - 1];
     const double t = length > 0 ? (s - cum[j - 1]) / length : 0;
-    if (t <= 1e-9) return j - 1;
-    if (t >= 1 - 1e-9) return j;
-    w.insert(w.begin() + long(j), lerp(w[j - 1], w[j], t));
-    return j;
-  }
-
-  // The cost of the path up to each waypoint.
-  std::vector<double> cumulativeCost(const std::vector<Config>& w) const {
-    std::vector<double> cum{0};
-    for (size_t k = 1; k < w.size(); ++k)
-      cum.push_back(cum.back() + segmentCost(checker_, w[k - 1], w[k]));
-    return cum;
+    if (t <= 1e-9) return {j - 1, false, w[j - 1]};
+    if (t >= 1 - 1e-9) return {j, false, w[j]};
+    return {j, true, lerp(w[j - 1], w[j], t)};
   }
 
   // One attempt: two random points of the path, joined straight (all of every robot when
-  // not `partial`) or in one robot's translation, rotation or both.
+  // not `partial`) or in one robot's translation, rotation or both. Only a candidate that is
+  // shorter is built and certified, and only the stretch it replaces: an attempt costs what
+  // its stretch does, not a copy of the path.
   void shortcut(std::vector<Config>& w, bool partial) {
-    const std::vector<double> cum = cumulativeCost(w);
+    const std::vector<double>& cum = cumulativeCost(w);
     const double total = cum.back();
     if (total <= 0) return;
     double s1 = rng_.uniform(0, total), s2 = rng_.uniform(0, total);
@@ -355,48 +368,107 @@ class Optimizer {
     if (rng_.below(8) == 0) s1 = 0;
     if (rng_.below(8) == 0) s2 = total;  // to the end, whose angle may change by a full turn
     if (s2 - s1 < 1e-9 * total) return;
-    std::vector<Config> c = w;
-    const size_t i = pointAt(c, cum, s1);
-    std::vector<double> cc = cumulativeCost(c);
-    const size_t jj = pointAt(c, cc, s2);
-    if (c.size() > cc.size()) cc = cumulativeCost(c);  // inserted: the arc parameters once more
-    if (jj <= i) return;
-    const double oldCost = cc[jj] - cc[i];
-    // The goal's angle counts modulo a full turn (as the certifier takes it): a stretch to the
-    // end may end there at the turn nearest to where it begins.
-    auto aimEnd = [&](size_t robot) {
-      if (jj + 1 < c.size() || !rigid(robot)) return;
-      double& end = c[jj][3 * robot + 2];
-      end += 2 * M_PI * std::round((c[i][3 * robot + 2] - end) / (2 * M_PI));
-    };
+    Stretch st{at(w, cum, s1), at(w, cum, s2), 0, 0, 0, {}};
+    st.begin = st.from.inserted ? st.from.k : st.from.k + 1;
+    st.end = st.to.k;  // the waypoints strictly between the two points: [begin, end)
+    if (st.end + 1 <= st.begin) return;  // both points are one waypoint
+    st.oldCost = stretchCost(w, st);
+    st.aimed = st.to.q;
     if (!partial) {
-      for (size_t r = 0; r < scene_.robots.size(); ++r) aimEnd(r);
-      const double newCost = segmentCost(checker_, c[i], c[jj]);
-      if (newCost >= oldCost - 1e-12 * total) return;
-      if (!certified({c[i], c[jj]})) return;
-      c.erase(c.begin() + long(i) + 1, c.begin() + long(jj));
-    } else {
-      if (jj < i + 2) return;
-      const size_t robot = rng_.below(scene_.robots.size());
-      Part part = Part(rng_.below(3));
-      if (!rigid(robot)) part = Part::Translation;
-      std::vector<size_t> coords;
-      if (part != Part::Rotation) coords = {3 * robot, 3 * robot + 1};
-      if (part != Part::Translation) {
-        coords.push_back(3 * robot + 2);
-        aimEnd(robot);
-      }
-      for (size_t k = i + 1; k < jj; ++k) {
-        const double t = (cc[k] - cc[i]) / oldCost;
-        for (const size_t x : coords) c[k][x] = c[i][x] + t * (c[jj][x] - c[i][x]);
-      }
-      double newCost = 0;
-      for (size_t k = i; k < jj; ++k) newCost += segmentCost(checker_, c[k], c[k + 1]);
-      if (newCost >= oldCost - 1e-12 * total) return;
-      if (!certified(std::vector<Config>(c.begin() + long(i), c.begin() + long(jj) + 1))) return;
+      for (size_t r = 0; r < scene_.robots.size(); ++r) aimEnd(w, st, r);
+      const double newCost = segmentCost(checker_, st.from.q, st.aimed);
+      if (newCost >= st.oldCost - 1e-12 * total) return;
+      if (!certified({st.from.q, st.aimed})) return;
+      w.erase(w.begin() + long(st.begin), w.begin() + long(st.end));
+    } else if (!partialShortcut(w, st, total)) {
+      return;
     }
-    w = std::move(c);
+    if (!st.to.inserted) w[st.begin + (partial ? st.end - st.begin : 0)] = st.aimed;
+    const size_t afterFrom = partial ? st.end : st.begin;  // where the inner waypoints end now
+    if (st.to.inserted) w.insert(w.begin() + long(afterFrom), st.aimed);
+    if (st.from.inserted) w.insert(w.begin() + long(st.begin), st.from.q);
+    changed();
     ++s_.accepted;
+  }
+
+  // A shortcut's two points and the waypoints between them.
+  struct Stretch {
+    At from, to;
+    size_t begin = 0, end = 0;  // the waypoints between, [begin, end)
+    double oldCost = 0;
+    Config aimed;  // `to`, its goal angles aimed (aimEnd)
+  };
+
+  // The stretch's cost from its first point to its last, through the waypoints between.
+  double stretchCost(const std::vector<Config>& w, const Stretch& st) {
+    if (st.begin == st.end) return segmentCost(checker_, st.from.q, st.to.q);
+    const std::vector<double>& cum = cumulativeCost(w);
+    return segmentCost(checker_, st.from.q, w[st.begin]) + cum[st.end - 1] - cum[st.begin] +
+           segmentCost(checker_, w[st.end - 1], st.to.q);
+  }
+
+  // The goal's angle counts modulo a full turn (as the certifier takes it): a stretch to the
+  // end may end there at the turn nearest to where it begins.
+  void aimEnd(const std::vector<Config>& w, Stretch& st, size_t robot) const {
+    if (st.to.inserted || st.to.k + 1 < w.size() || !rigid(robot)) return;
+    double& end = st.aimed[3 * robot + 2];
+    end += 2 * M_PI * std::round((st.from.q[3 * robot + 2] - end) / (2 * M_PI));
+  }
+
+  // One robot's translation, rotation or both straightened over the stretch, everything else
+  // keeping its timing; taken into `w`'s waypoints between when it is shorter and certified.
+  bool partialShortcut(std::vector<Config>& w, Stretch& st, double total) {
+    if (st.end < st.begin + 1) return false;
+    const size_t robot = rng_.below(scene_.robots.size());
+    Part part = Part(rng_.below(3));
+    if (!rigid(robot)) part = Part::Translation;
+    std::vector<size_t> coords;
+    if (part != Part::Rotation) coords = {3 * robot, 3 * robot + 1};
+    if (part != Part::Translation) {
+      coords.push_back(3 * robot + 2);
+      aimEnd(w, st, robot);
+    }
+    // The robot's own poses along the stretch, before and after: the others' cost is the same.
+    const size_t n = st.end - st.begin + 2;
+    auto pose = [&](const Config& q) {
+      return Config(q.begin() + 3 * long(robot), q.begin() + 3 * long(robot) + 3);
+    };
+    std::vector<Config> before{pose(st.from.q)}, after = before;
+    const std::vector<double>& cum = cumulativeCost(w);
+    const double lead = segmentCost(checker_, st.from.q, w[st.begin]);
+    for (size_t k = st.begin; k < st.end; ++k) {
+      before.push_back(pose(w[k]));
+      const double t = (lead + cum[k] - cum[st.begin]) / st.oldCost;
+      Config p = before.back();
+      for (const size_t x : coords)
+        p[x - 3 * robot] = st.from.q[x] + t * (st.aimed[x] - st.from.q[x]);
+      after.push_back(p);
+    }
+    before.push_back(pose(st.to.q));
+    after.push_back(pose(st.aimed));
+    if (robotCost(after, robot) >= robotCost(before, robot) - 1e-12 * total) return false;
+    std::vector<Config> stretch;
+    stretch.reserve(n);
+    stretch.push_back(st.from.q);
+    for (size_t k = st.begin; k < st.end; ++k) {
+      stretch.push_back(w[k]);
+      std::copy(after[k - st.begin + 1].begin(), after[k - st.begin + 1].end(),
+                stretch.back().begin() + 3 * long(robot));
+    }
+    stretch.push_back(st.aimed);
+    if (!certified(stretch)) return false;
+    for (size_t k = st.begin; k < st.end; ++k) w[k] = std::move(stretch[k - st.begin + 1]);
+    return true;
+  }
+
+  // One robot's cost along its poses (x, y, angle).
+  double robotCost(const std::vector<Config>& poses, size_t robot) const {
+    double c = 0;
+    for (size_t k = 1; k < poses.size(); ++k) {
+      const double dx = poses[k][0] - poses[k - 1][0], dy = poses[k][1] - poses[k - 1][1];
+      c += std::hypot(dx, dy) + checker_.radius(robot) * std::fabs(poses[k][2] - poses[k - 1][2]);
+    }
+    return c;
   }
 
   // A waypoint on the straight segment between its neighbours, at one common fraction for
@@ -458,6 +530,7 @@ class Optimizer {
         continue;
       }
       w[k] = q;
+      changed();
       ++s_.accepted;
     }
   }
@@ -477,6 +550,8 @@ class Optimizer {
   std::map<size_t, Vec2> spinPlaces_;         // per segment where a run turned most, in one rewind
   static constexpr double kMinSaving = 0.05;  // radians of back and forth worth a try
   PathCheckSettings quick_;
+  std::vector<double> cum_;  // cumulativeCost's, for the path at `cumVersion_`
+  size_t version_ = 0, cumVersion_ = size_t(-1);
   size_t limit_ = 0;  // work at which the current step ends
   size_t workPerEvaluation_ =
       scene_.robots.size() + scene_.robots.size() * (scene_.robots.size() - 1) / 2;
