@@ -15,6 +15,7 @@
 #include "render/HtmlViewer.h"
 #include "render/SvgRenderer.h"
 #include "util/AtomicFile.h"
+#include "util/MemoryLimit.h"
 #include "util/Number.h"
 
 namespace mms::cli {
@@ -53,7 +54,10 @@ static void printNotes(const ImportNotes& notes, bool quiet) {
 
 Scene readScene(const std::string& file, bool quiet) {
   ImportNotes notes;
-  Scene s = loadAnyScene(file, notes);
+  Scene s = [&] {
+    ReadingFile reading(file);
+    return loadAnyScene(file, notes);
+  }();
   printNotes(notes, quiet);
   return s;
 }

@@ -34,11 +34,11 @@ int runAtBoundary(const std::function<int()>& command, std::ostream& err) {
     err << "mms: interrupted (Ctrl-C); no output written\n";
     return kExitInterrupted;
   } catch (const std::bad_alloc&) {
-    err << "mms: out of memory (see --memory-limit); no output written\n";
+    err << outOfMemoryLine();
     return kExitInternal;
   } catch (const std::system_error& e) {
     if (outOfMemory(e)) {
-      err << "mms: out of memory (see --memory-limit); no output written\n";
+      err << outOfMemoryLine();
       return kExitInternal;
     }
     err << "mms: internal error: " << oneLine(e.what()) << "\n";

@@ -4,12 +4,17 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <latch>
 #include <new>
 #include <system_error>
+#include <thread>
+#include <vector>
 
 namespace mms {
 
@@ -21,44 +26,58 @@ bool outOfMemory(const std::system_error& e) {
 namespace {
 
 std::atomic<bool> allocationFailed{false};
+double limitMegabytes = 0;
 std::terminate_handler previousTerminate = nullptr;
+// The line that reports the failure, composed ahead: the failure must not allocate.
+char line[768] = "";
+int lineLength = 0;
 
-[[noreturn]] void throwBadAlloc() {
-  allocationFailed = true;
-  throw std::bad_alloc();
+void composeLine(const char* readingFile) {
+  lineLength = readingFile
+                   ? std::snprintf(line, sizeof line,
+                                   "mms: %s: does not fit in --memory-limit %g MB (out of memory "
+                                   "while reading it); no output written\n",
+                                   readingFile, limitMegabytes)
+                   : std::snprintf(line, sizeof line,
+                                   "mms: out of memory (see --memory-limit); no output written\n");
+  lineLength = std::clamp(lineLength, 0, int(sizeof line) - 1);
 }
 
-// GMP aborts when an allocation fails; these throw instead, so the failure unwinds to the
-// command boundary (GMP's frames have unwind tables on Debian's x86-64 and arm64 builds).
+// Under the cap a failed allocation ends the command at once, with its line and exit 3. It
+// does not unwind: CGAL's arrangements cut short inside an insertion cannot be destroyed
+// safely (their half-linked DCEL crashes the destructor), and nothing is left to save, for
+// outputs are written whole at the end of a command (AtomicFile.h).
+[[noreturn]] void endOutOfMemory() {
+  allocationFailed = true;
+  (void)!::write(STDERR_FILENO, line, size_t(lineLength));
+  ::_exit(3);
+}
+
+// GMP aborts when an allocation fails; these end the command as any other failure does.
 void* gmpAllocate(size_t n) {
   if (void* p = std::malloc(n)) return p;
-  throwBadAlloc();
+  endOutOfMemory();
 }
 
 void* gmpReallocate(void* p, size_t, size_t n) {
   if (void* q = std::realloc(p, n)) return q;
-  throwBadAlloc();
+  endOutOfMemory();
 }
 
 void gmpFree(void* p, size_t) { std::free(p); }
 
-// A library thread that lets an allocation failure escape, or a std::thread destroyed while
-// unwinding from one (OMPL's PRM), ends in std::terminate: after a failed allocation that is
-// the limit at work, reported as the command boundary reports it, without a signal.
+// A thread that could not be made (no room for its stack) throws std::system_error; one that
+// escapes a library thread ends in std::terminate: the limit at work, reported the same way.
 [[noreturn]] void terminateAfterFailure() {
   if (std::exception_ptr e = std::current_exception()) try {
       std::rethrow_exception(e);
     } catch (const std::bad_alloc&) {
-      allocationFailed = true;
-    } catch (const std::system_error& error) {  // a thread's stack could not be mapped
-      if (outOfMemory(error)) allocationFailed = true;
+      endOutOfMemory();
+    } catch (const std::system_error& error) {
+      if (outOfMemory(error)) endOutOfMemory();
     } catch (...) {
     }
-  if (allocationFailed) {
-    static const char kLine[] = "mms: out of memory (see --memory-limit); no output written\n";
-    (void)!::write(STDERR_FILENO, kLine, sizeof kLine - 1);
-    ::_exit(3);
-  }
+  if (allocationFailed) endOutOfMemory();
   if (previousTerminate) previousTerminate();
   std::abort();
 }
@@ -70,17 +89,48 @@ __attribute__((noinline)) void growStack() {
   for (size_t i = 0; i < sizeof pages; i += 4096) pages[i] = 0;
 }
 
+// The allocator (jemalloc, as glibc's malloc) gives each new thread an arena of its own, made on
+// the thread's first allocation; jemalloc crashes when it cannot map one. Threads that allocate
+// now, under no cap, leave arenas that later threads (the portfolio's challenger, OMPL's PRM)
+// take over once these have ended.
+void warmThreadArenas() {
+  constexpr int kThreads = 3;
+  std::latch allocated(kThreads);
+  std::vector<std::thread> threads;
+  for (int i = 0; i < kThreads; ++i)
+    threads.emplace_back([&allocated] {
+      void* volatile p = std::malloc(64);
+      allocated.arrive_and_wait();  // all at once, so that each takes an arena of its own
+      std::free(p);
+    });
+  for (std::thread& t : threads) t.join();
+}
+
 }  // namespace
 
 bool limitMemory(double megabytes) {
   if (megabytes <= 0) return true;
   mp_set_memory_functions(gmpAllocate, gmpReallocate, gmpFree);
-  std::set_new_handler([] { throwBadAlloc(); });
+  std::set_new_handler([] { endOutOfMemory(); });
   previousTerminate = std::set_terminate(terminateAfterFailure);
   growStack();
+  warmThreadArenas();
+  limitMegabytes = megabytes;
+  composeLine(nullptr);
   const rlim_t bytes = rlim_t(megabytes * 1024 * 1024);
   const struct rlimit limit { bytes, bytes };
   return setrlimit(RLIMIT_AS, &limit) == 0;
+}
+
+ReadingFile::ReadingFile(const std::string& file) {
+  if (limitMegabytes > 0) composeLine(file.c_str());
+}
+
+ReadingFile::~ReadingFile() { composeLine(nullptr); }
+
+std::string outOfMemoryLine() {
+  if (lineLength == 0) composeLine(nullptr);
+  return std::string(line, size_t(lineLength));
 }
 
 }  // namespace mms

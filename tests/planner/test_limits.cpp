@@ -3,6 +3,8 @@
 // planners must then end with "not found" instead of running the slice to its end.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -103,7 +105,7 @@ TEST(Limits, OneRobotPlannerEndsWhenTheLimitStrikesInsideASlice) {
   // The planner stays usable: a second query with time builds slices. The sanitizers slow
   // slices more than the usual tenfold margin, so their budget is set apart.
   const OneRobotResult again = planner.solve(scene.robots[0].start, scene.robots[0].goal,
-                                        Termination(test::kSanitized ? 300 : 5));
+                                             Termination(test::kSanitized ? 300 : 5));
   EXPECT_GT(planner.slices().size(), 0u);
   if (again.status == PlanStatus::Found) {
     EXPECT_TRUE(again.certificate.ok);
@@ -279,6 +281,48 @@ TEST(Limits, ThePortfolioRunsOutOfMemoryCleanly) {
   const test::Outcome r = planZigzagSlot(80, out);
   EXPECT_EQ(r.code, 3) << r.out << r.err;
   EXPECT_EQ(r.err, "mms: out of memory (see --memory-limit); no output written\n");
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// The portfolio's second thread starts after the scene and the planner took most of the cap:
+// the allocator must not crash making that thread's arena (jemalloc once did, at 80 MB on 2000
+// discs), whatever cap the run meets it at.
+TEST(Limits, AThreadStartedNearTheCapEndsCleanly) {
+  if (test::kSanitized) return;  // the sanitizers reserve terabytes: no cap on address space
+  test::TempDir dir;
+  const std::string scene = dir.path("grid.json"), out = dir.path("path.json");
+  saveScene(discGridScene(1, 2000, 5), scene);
+  for (int mb = 72; mb <= 100; mb += 4) {
+    const test::Outcome r = test::runMms("plan " + test::quote(scene) + " -q --memory-limit " +
+                                         std::to_string(mb) + " -o " + test::quote(out));
+    EXPECT_TRUE(r.code == 0 || r.code == 3) << mb << " MB: " << r.code << r.err;
+    EXPECT_EQ(std::filesystem::exists(out), r.code == 0) << mb << " MB";
+    std::filesystem::remove(out);
+  }
+}
+
+// A scene too large for the cap is named as such, not taken for a planner that grew: 50 000
+// disc robots (a 5 MB file) cannot even be read within 40 MB.
+TEST(Limits, ASceneTooLargeForTheMemoryLimitIsNamed) {
+  if (test::kSanitized) return;  // the sanitizers reserve terabytes: no cap on address space
+  test::TempDir dir;
+  const std::string scene = dir.path("crowd.json"), out = dir.path("path.json");
+  {
+    std::ofstream f(scene);
+    f << R"({"format": "mms-scene/1", "bounds": [0, 0, 1000, 1000], "obstacles": [], "robots": [)";
+    for (int i = 0; i < 50000; ++i) {
+      const double x = 1.5 + 3 * (i % 300), y = 1.5 + 3 * (i / 300);
+      f << (i ? "," : "") << R"({"name": "d)" << i << R"(", "disc": 1, "start": [)" << x << ", "
+        << y << R"(, 0], "goal": [)" << x << ", " << y << ", 0]}";
+    }
+    f << "]}";
+  }
+  const test::Outcome r =
+      test::runMms("plan " + test::quote(scene) + " --memory-limit 40 -o " + test::quote(out));
+  EXPECT_EQ(r.code, 3) << r.out << r.err;
+  EXPECT_EQ(r.err, "mms: " + scene +
+                       ": does not fit in --memory-limit 40 MB (out of memory while reading it); "
+                       "no output written\n");
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
