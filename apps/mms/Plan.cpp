@@ -97,8 +97,12 @@ int report(const PlanArgs& a, const Scene& scene, const std::string& label, cons
       std::printf("%s: no path exists: %s (%s, after %.3g s)\n", label.c_str(),
                   r.stats.noPath.c_str(), a.planner.c_str(), r.stats.seconds);
     else if (early)
-      std::printf("%s: no path found (%s ended its search after %.3g s, before the %.3g s limit)\n",
-                  label.c_str(), a.planner.c_str(), r.stats.seconds, a.timeLimit);
+      std::printf(
+          "%s: no path found (%s ended its search after %.3g s, before the %.3g s limit%s)\n",
+          label.c_str(), a.planner.c_str(), r.stats.seconds, a.timeLimit,
+          scene.hasDiscs() ? "; it searched round polygons about the discs: more --disc-sides "
+                             "narrow them"
+                           : "");
     else
       std::printf("%s: no path found within %.3g s (%s, %s)\n", label.c_str(), a.timeLimit,
                   a.planner.c_str(),

@@ -38,6 +38,8 @@ struct Scene {
   }
   /// Appends an exact disc obstacle (and its stand-in ring).
   void addObstacleDisc(const Disc& d);
+  /// Whether a robot or an obstacle is an exact disc.
+  bool hasDiscs() const;
 
   /// Contacts up to this depth count as touching, not colliding (see docs/formats.md).
   double tolerance() const {

@@ -1,5 +1,6 @@
 #include "io/SceneIO.h"
 
+#include <algorithm>
 #include <set>
 
 #include "geometry/CollisionChecker.h"
@@ -28,6 +29,12 @@ void Scene::addObstacleDisc(const Disc& d) {
   if (obstacleDiscs.size() < obstacles.size()) obstacleDiscs.resize(obstacles.size());
   obstacles.push_back(discStandIn(d));
   obstacleDiscs.push_back(d);
+}
+
+bool Scene::hasDiscs() const {
+  return std::any_of(robots.begin(), robots.end(), [](const Robot& r) { return r.disc > 0; }) ||
+         std::any_of(obstacleDiscs.begin(), obstacleDiscs.end(),
+                     [](const std::optional<Disc>& d) { return d.has_value(); });
 }
 
 namespace {

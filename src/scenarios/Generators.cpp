@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/PolygonOps.h"
 #include "scenarios/Witness.h"
 
 namespace mms {
@@ -458,6 +459,13 @@ Robot discRobot(size_t i, double radius, Vec2 start, Vec2 goal) {
   r.shape = discShape(radius);
   r.start = {start.x, start.y, 0};
   r.goal = {goal.x, goal.y, 0};
+  return r;
+}
+
+Robot exactDiscRobot(size_t i, double radius, Vec2 start, Vec2 goal) {
+  Robot r = discRobot(i, radius, start, goal);
+  r.disc = radius;
+  r.shape = discStandIn({{0, 0}, radius});
   return r;
 }
 

@@ -143,6 +143,8 @@ Scene assemblyTwoScene(double slack, bool mPartsOnly = false);
 Ring discShape(double radius);
 /// Translating disc robot "disc-<i>" (its shape discShape(radius)) from start to goal.
 Robot discRobot(size_t i, double radius, Vec2 start, Vec2 goal);
+/// The same robot as an exact disc (Robot::disc), with the stand-in planners use.
+Robot exactDiscRobot(size_t i, double radius, Vec2 start, Vec2 goal);
 /// The axis-aligned rectangle [x0, x1] x [y0, y1], counter-clockwise from (x0, y0).
 Ring rect(double x0, double y0, double x1, double y1);
 

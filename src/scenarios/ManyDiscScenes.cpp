@@ -36,7 +36,7 @@ Scene discGridScene(uint64_t seed, size_t count, double spacing) {
   for (size_t i = 0; i < count; ++i) {
     const Vec2 at{spacing * double(i % cols), spacing * double(i / cols)};
     const Vec2 from = turned(at), to = turned(at + shift);
-    scene.robots.push_back(discRobot(i, r, from, to));
+    scene.robots.push_back(exactDiscRobot(i, r, from, to));
     ends.push_back(from), ends.push_back(to);
   }
   // Room round both grids for a disc to pass: two spacings and a diameter.
@@ -118,7 +118,7 @@ Scene discTrianglesScene(uint64_t seed, size_t count) {
     std::vector<Vec2> places;
     if (!placeDiscsAmongTriangles(rng, count, triangles, half, scene, places)) continue;
     for (size_t i = 0; i < count; ++i)
-      scene.robots.push_back(discRobot(i, 1, places[2 * i], places[2 * i + 1]));
+      scene.robots.push_back(exactDiscRobot(i, 1, places[2 * i], places[2 * i + 1]));
     return scene;
   }
 }
@@ -154,10 +154,7 @@ Scene discBoxScene(uint64_t seed, size_t count) {
   for (const Ring& o : scene.obstacles) corners.insert(corners.end(), o.begin(), o.end());
   scene.bounds = boundingBox(corners);
   for (size_t i = 0; i < count; ++i) {
-    Robot robot = discRobot(i, r, centre(starts[i]), centre(goals[i]));
-    robot.disc = r;
-    robot.shape = discStandIn({{0, 0}, r});
-    scene.robots.push_back(std::move(robot));
+    scene.robots.push_back(exactDiscRobot(i, r, centre(starts[i]), centre(goals[i])));
   }
   return scene;
 }

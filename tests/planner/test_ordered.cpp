@@ -92,6 +92,7 @@ TEST(ManyDiscScenes, SameSeedSameSceneValidAndSized) {
       r.robots = robots;
       const Scene a = makeScenario(r), b = makeScenario(r);  // makeScenario validates them
       EXPECT_EQ(a.robots.size(), size_t(robots)) << name;
+      for (const Robot& robot : a.robots) EXPECT_EQ(robot.disc, 1) << name << ": exact discs";
       EXPECT_EQ(sceneToJson(a), sceneToJson(b)) << name;
       r.seed = 8;
       EXPECT_NE(sceneToJson(makeScenario(r)), sceneToJson(a)) << name;

@@ -1,6 +1,7 @@
 // The planner seam: the registry, declared parameters, one result type.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "Support.h"
@@ -168,4 +169,39 @@ TEST(Registry, TwoRobotMmsSolvedAgainAfterACutGivesAFreshRunsPath) {
     ASSERT_EQ(again.status, PlanStatus::Found) << "cut at " << cut << " s";
     EXPECT_EQ(again.waypoints, fresh.waypoints) << "cut at " << cut << " s";
   }
+}
+
+// MMS plans on polygons around discs: a gap 1 % wider than a disc, across the direction of an
+// 8-gon's vertices (8 % wider than the disc there), is closed to 8 sides and open to 64; the
+// path found is certified on the disc itself.
+TEST(Registry, DiscSidesSetHowCloselyMmsPlansAroundDiscs) {
+  const double c = std::cos(M_PI / 8), sn = std::sin(M_PI / 8);
+  auto turned = [&](Vec2 p) {  // about the centre, so the gap lies across a vertex direction
+    return Vec2{5 + c * (p.x - 5) - sn * (p.y - 5), 5 + sn * (p.x - 5) + c * (p.y - 5)};
+  };
+  Scene s;
+  s.bounds = {-2, -2, 12, 12};
+  for (const Box& b : {Box{-3, 4.5, 3.99, 5.5}, Box{6.01, 4.5, 13, 5.5}})
+    s.obstacles.push_back({turned({b.xmin, b.ymin}), turned({b.xmax, b.ymin}),
+                           turned({b.xmax, b.ymax}), turned({b.xmin, b.ymax})});
+  s.robots = {exactDiscRobot(0, 1, turned({2, 2}), turned({2, 8}))};  // no straight way
+  for (const int sides : {8, 64}) {
+    PlannerParams p;
+    p.values["disc-sides"] = sides;
+    p.values["optimize"] = 0;
+    const PlanResult r =
+        makePlanner("mms", s, p)->solve(Termination(planSeconds(sides == 8 ? 1 : 20)));
+    EXPECT_EQ(r.status == PlanStatus::Found, sides == 64) << sides << " sides";
+    if (r.status == PlanStatus::Found) {
+      EXPECT_TRUE(r.certificate.ok);
+    }
+  }
+  // The command line says where to look when the stand-ins closed the way.
+  TempDir dir;
+  const std::string scene = dir.path("gap.json");
+  saveScene(s, scene);
+  const Outcome o = runMms("plan " + quote(scene) + " --planner mms --disc-sides 8 -o " +
+                           quote(dir.path("p.json")));
+  EXPECT_EQ(o.code, 1) << o.out << o.err;
+  EXPECT_NE(o.out.find("more --disc-sides"), std::string::npos) << o.out;
 }
