@@ -40,6 +40,10 @@ struct Box {
   bool contains(Vec2 p) const { return xmin <= p.x && p.x <= xmax && ymin <= p.y && p.y <= ymax; }
   double width() const { return xmax - xmin; }
   double height() const { return ymax - ymin; }
+  /// The box grown by `margin` on every side.
+  Box grown(double margin) const {
+    return {xmin - margin, ymin - margin, xmax + margin, ymax + margin};
+  }
   /// Distance between two boxes (0 when they overlap).
   double distance(const Box& o) const { return std::sqrt(distance2(o)); }
   /// std::max, not std::fmax: fmax is a call into libm (it orders NaNs), and the certifier's
@@ -66,6 +70,12 @@ struct Transform {
       : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.x), ty(p.y) {}
   Vec2 operator()(Vec2 v) const { return {tx + c * v.x - s * v.y, ty + s * v.x + c * v.y}; }
 };
+
+/// `v` turned by `theta` about the origin.
+inline Vec2 rotated(Vec2 v, double theta) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
 
 /// Transforms a ring into a caller-owned buffer (no allocation once the buffer is large enough).
 inline void transformRing(const Ring& in, const Pose& pose, Ring& out) {

@@ -57,6 +57,12 @@ using Config = std::vector<double>;
 inline Pose poseOf(const Config& q, size_t robot) {
   return {q[3 * robot], q[3 * robot + 1], q[3 * robot + 2]};
 }
+/// The configuration a fraction `t` of the way from `a` to `b`, every coordinate alike.
+inline Config lerp(const Config& a, const Config& b, double t) {
+  Config q(a.size());
+  for (size_t c = 0; c < a.size(); ++c) q[c] = a[c] + t * (b[c] - a[c]);
+  return q;
+}
 inline void setPose(Config& q, size_t robot, const Pose& p) {
   q[3 * robot] = p.x;
   q[3 * robot + 1] = p.y;

@@ -47,7 +47,7 @@ Box openPlaneBounds(const Scene& scene) {
   }
   const Box b = boundingBox(points);
   const double margin = 1.1 * diameter;
-  return {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
+  return b.grown(margin);
 }
 
 }  // namespace

@@ -8,10 +8,6 @@ const ManifoldFamily CompoundFrame::kSliceFamily{"compound-slice"};
 const ManifoldFamily CompoundFrame::kLineFamily{"compound-line"};
 
 namespace {
-Vec2 rotated(Vec2 v, double theta) {
-  const double c = std::cos(theta), s = std::sin(theta);
-  return {c * v.x - s * v.y, s * v.x + c * v.y};
-}
 // Poses computed through the relative pose carry rounding: equal within a hair.
 bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * (1 + std::abs(a)); }
 bool nearAngle(double a, double b) { return std::abs(std::remainder(a - b, 2 * M_PI)) <= 1e-9; }

@@ -5,8 +5,8 @@
 #include <map>
 
 #include "check/PathChecker.h"
+#include "geometry/SpinPlace.h"
 #include "manifolds/Pivot.h"
-#include "path/SpinPlace.h"
 
 namespace mms {
 
@@ -23,12 +23,6 @@ double segmentCost(const CollisionChecker& checker, const Config& a, const Confi
     c += std::hypot(dx, dy) + checker.radius(i) * std::fabs(dt);
   }
   return c;
-}
-
-Config lerp(const Config& a, const Config& b, double t) {
-  Config q(a.size());
-  for (size_t c = 0; c < a.size(); ++c) q[c] = a[c] + t * (b[c] - a[c]);
-  return q;
 }
 
 // Which coordinates of a robot a partial shortcut straightens.
@@ -243,10 +237,7 @@ class Optimizer {
                                   bool mirror, size_t from, size_t robot) {
     const size_t c = 3 * robot + 2;
     const Vec2 centre = spinCentre(robot);
-    auto centreAt = [&](const Config& q) {
-      const Vec2 offset = Transform(Pose{0, 0, q[c]})(centre);
-      return Vec2{q[c - 2] + offset.x, q[c - 1] + offset.y};
-    };
+    auto centreAt = [&](const Config& q) { return Transform(poseOf(q, robot))(centre); };
     size_t end = from + stretch.size() - 1;  // an earlier run's turn ends before a later's
     for (const size_t run : moved) {
       const auto [first, last] = runs[run];

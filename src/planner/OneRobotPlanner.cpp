@@ -8,7 +8,7 @@
 #include "manifolds/CellSampling.h"
 #include "manifolds/Pivot.h"
 #include "path/Motion.h"
-#include "path/SpinPlace.h"
+#include "geometry/SpinPlace.h"
 #include "planner/NoPath.h"
 #include "planner/Rounds.h"
 #include "util/Parallel.h"

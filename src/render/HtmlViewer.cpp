@@ -189,6 +189,18 @@ function fromHash() {
   }
   picked = named;
   drawStill(); draw();
+  if (h.has('bench')) benchFrames(Math.max(1, Number(h.get('bench')) || 100));
+}
+// #bench=N: N frames drawn through the motion, each read back so that it is rasterised, and
+// the mean time a frame took put on the page (data-frame-ms of the body, and the label).
+function benchFrames(n) {
+  const t0 = performance.now();
+  for (let i = 0; i < n; ++i) {
+    ui.slider.value = Math.round(1000 * i / n); draw(); g.getImageData(0, 0, 1, 1);
+  }
+  const ms = (performance.now() - t0) / n;
+  document.body.dataset.frameMs = ms.toFixed(3);
+  ui.label.textContent = 'a frame in ' + ms.toFixed(2) + ' ms';
 }
 window.addEventListener('hashchange', fromHash);
 fromHash();

@@ -62,9 +62,6 @@ Ring counterClockwise(Ring r) {
   if (a < 0) std::reverse(r.begin(), r.end());
   return r;
 }
-Vec2 turned(Vec2 p, double a) {
-  return {p.x * std::cos(a) - p.y * std::sin(a), p.x * std::sin(a) + p.y * std::cos(a)};
-}
 }  // namespace
 
 Scene carryTurnScene(uint64_t seed, double playShare) {
@@ -114,21 +111,21 @@ Scene carryTurnScene(uint64_t seed, double playShare) {
   Box box{left - margin, -top, chamber + margin, top};
   Vec2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
   for (const Vec2 c : {Vec2{box.xmin, box.ymin}, Vec2{box.xmax, box.ymax}}) {
-    const Vec2 t = turned(c, frame);
+    const Vec2 t = rotated(c, frame);
     lo = {std::min(lo.x, t.x), std::min(lo.y, t.y)};
     hi = {std::max(hi.x, t.x), std::max(hi.y, t.y)};
   }
   scene.bounds = {lo.x, lo.y, hi.x, hi.y};
   for (const Ring& r : {upper, lower}) {
     Ring t;
-    for (const Vec2 p : r) t.push_back(turned(p, frame));
+    for (const Vec2 p : r) t.push_back(rotated(p, frame));
     scene.obstacles.push_back(counterClockwise(t));
   }
   // The pair in the corridor, opening towards the chamber; at the goal, turned half round.
   const double along = rng.uniform(left + length / 2 + 0.1 * run, -mouth - length / 2 - 0.1 * run);
-  const Vec2 centre = turned({along, 0}, frame);
+  const Vec2 centre = rotated({along, 0}, frame);
   auto pose = [&](double theta, Vec2 offset) {
-    const Vec2 p = centre + turned(offset, theta);
+    const Vec2 p = centre + rotated(offset, theta);
     return Pose{p.x, p.y, std::remainder(theta, 2 * M_PI)};
   };
   // The part anywhere in the pocket's play, at the start and (independently) at the goal: the
@@ -588,7 +585,7 @@ Scene bendScene(uint64_t seed) {
   // Which way it turns (mirror in y = x swaps the arms' roles) and a quarter turn of the whole.
   const bool mirror = rng.below(2) == 1;
   const double quarter = double(rng.below(4)) * M_PI / 2;
-  auto place = [&](Vec2 v) { return turned(mirror ? Vec2{v.y, v.x} : v, quarter); };
+  auto place = [&](Vec2 v) { return rotated(mirror ? Vec2{v.y, v.x} : v, quarter); };
   for (Ring& o : scene.obstacles) {
     for (Vec2& v : o) v = place(v);
     o = counterClockwise(o);

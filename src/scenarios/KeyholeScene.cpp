@@ -71,8 +71,7 @@ Scene keyholeScene(uint64_t seed, double slack) {
   const bool mirror = rng.below(2) == 1;
   auto place = [&](Vec2 v) {
     if (mirror) v.x = -v.x;
-    return Vec2{v.x * std::cos(quarter) - v.y * std::sin(quarter),
-                v.x * std::sin(quarter) + v.y * std::cos(quarter)};
+    return rotated(v, quarter);
   };
   auto placePose = [&](Pose p) {
     const Vec2 v = place({p.x, p.y});

@@ -27,8 +27,8 @@ Scene discGridScene(uint64_t seed, size_t count, double spacing) {
   constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1}, kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
   const double dx = kDx[dir], dy = kDy[dir];
   const Vec2 shift{dx * (w + gap + spacing), dy * (h + gap + spacing)};
-  const double turn = rng.uniform(0, 2 * M_PI), c = std::cos(turn), s = std::sin(turn);
-  auto turned = [&](Vec2 p) { return Vec2{c * p.x - s * p.y, s * p.x + c * p.y}; };
+  const double turn = rng.uniform(0, 2 * M_PI);
+  auto turned = [&](Vec2 p) { return rotated(p, turn); };
   Scene scene;
   scene.name = "disc-grid-";
   scene.name += std::to_string(count) + "-" + std::to_string(seed);
@@ -42,7 +42,7 @@ Scene discGridScene(uint64_t seed, size_t count, double spacing) {
   // Room round both grids for a disc to pass: two spacings and a diameter.
   const Box b = boundingBox(ends);
   const double margin = 2 * spacing + 2 * r;
-  scene.bounds = {b.xmin - margin, b.ymin - margin, b.xmax + margin, b.ymax + margin};
+  scene.bounds = b.grown(margin);
   return scene;
 }
 
@@ -137,8 +137,8 @@ Scene discBoxScene(uint64_t seed, size_t count) {
                             goals = rng.sample(cols * rows, count);
   // The whole box turned by an angle from the seed: its walls are obstacles, the bounds the box
   // round them.
-  const double turn = rng.uniform(0, 2 * M_PI), c = std::cos(turn), s = std::sin(turn);
-  auto turned = [&](Vec2 p) { return Vec2{c * p.x - s * p.y, s * p.x + c * p.y}; };
+  const double turn = rng.uniform(0, 2 * M_PI);
+  auto turned = [&](Vec2 p) { return rotated(p, turn); };
   auto centre = [&](size_t cell) {
     return turned({2 * r * (double(cell % cols) + 0.5), 2 * r * (double(cell / cols) + 0.5)});
   };

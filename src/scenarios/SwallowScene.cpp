@@ -107,9 +107,8 @@ Scene swallowScene(uint64_t seed, double slack) {
   gripper.start = {-clear - x1 + refX, 0, 0};
   gripper.goal = {clear + x1 - refX, 0, sense * M_PI};
   // A quarter turn of the whole scene.
-  const double quarter = double(rng.below(4)) * M_PI / 2, c = std::cos(quarter),
-               s = std::sin(quarter);
-  auto place = [&](Vec2 v) { return Vec2{v.x * c - v.y * s, v.x * s + v.y * c}; };
+  const double quarter = double(rng.below(4)) * M_PI / 2;
+  auto place = [&](Vec2 v) { return rotated(v, quarter); };
   auto placePose = [&](Pose p) {
     const Vec2 v = place({p.x, p.y});
     return Pose{v.x, v.y, std::remainder(p.theta + quarter, 2 * M_PI)};

@@ -96,6 +96,21 @@ TEST(CliInput, AnglesBeyondAFullTurnGetANoteAboutRadians) {
   EXPECT_NE(quiet.err.find("angles are in radians"), std::string::npos) << quiet.err;
 }
 
+// Validate names each robot's shape: a disc by its radius, a polygon by its vertices.
+TEST(CliInput, ValidateNamesDiscsByTheirRadius) {
+  test::TempDir dir;
+  const std::string scene = dir.path("box.json");
+  ASSERT_EQ(run("scenario disc-box --seed 3 --robots 4 -o " + test::quote(scene)).code, 0);
+  const test::Outcome r = run("validate " + test::quote(scene));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("robot 'disc-0': disc of radius 0.5, translate"), std::string::npos)
+      << r.out;
+  const test::Outcome polygons =
+      run("validate " + test::quote(test::scenario("one-robot/bar-slot.json")));
+  EXPECT_NE(polygons.out.find(" vertices, "), std::string::npos) << polygons.out;
+  EXPECT_EQ(polygons.out.find("disc of radius"), std::string::npos) << polygons.out;
+}
+
 // GeoJSON and shapely write polygons as closed rings: the same polygon, read with a note.
 TEST(CliInput, AClosedRingIsThePolygonWithANote) {
   test::TempDir dir;

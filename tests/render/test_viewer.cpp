@@ -13,6 +13,7 @@
 #include "io/SceneIO.h"
 #include "render/HtmlViewer.h"
 #include "render/Palette.h"
+#include "scenarios/Generators.h"
 
 namespace mms {
 namespace {
@@ -181,6 +182,27 @@ TEST(View, ARobotNamedInTheLinkStandsOutAmongMany) {
   for (size_t other : {3u, 20u}) {
     EXPECT_TRUE(near(colourAt(other), robotColour(other), 0.25)) << "robot " << other << " fades";
   }
+}
+
+// #bench=N draws N frames and puts the mean time of one on the page, for measuring playback
+// (the time itself is the benchmark's to judge, not a test's).
+TEST(View, TheFrameMeterPutsATimeOnThePage) {
+  const auto chromium = test::runCommand("command -v chromium");
+  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  TempDir dir;
+  const Scene s = discGridScene(1, 40, 10);
+  Path p;
+  p.waypoints = {startConfig(s), goalConfig(s)};
+  const std::string html = viewPage(s, p, dir);
+  auto c = test::runCommand("chromium --headless --no-sandbox --disable-gpu --user-data-dir=" +
+                            quote(dir.path("profile")) + " --dump-dom " +
+                            quote("file://" + html + "#bench=20"));
+  ASSERT_EQ(c.code, 0) << c.err;
+  const size_t at = c.out.find("data-frame-ms=\"");
+  ASSERT_NE(at, std::string::npos) << c.out.substr(0, 400);
+  const double ms = std::stod(c.out.substr(at + 15));
+  EXPECT_GT(ms, 0);
+  EXPECT_NE(c.out.find("a frame in "), std::string::npos);
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "path/SpinPlace.h"
+#include "geometry/SpinPlace.h"
 
 using namespace mms;
 

@@ -1,4 +1,4 @@
-#include "path/SpinPlace.h"
+#include "geometry/SpinPlace.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,12 +19,9 @@ class Walls {
   double distance(Vec2 p) const {
     const Box& b = scene_.bounds;
     double d = std::min({p.x - b.xmin, b.xmax - p.x, p.y - b.ymin, b.ymax - p.y});
-    for (size_t i = 0; i < boxes_.size(); ++i) {
-      const Box& o = boxes_[i];
-      const double dx = std::max({o.xmin - p.x, 0.0, p.x - o.xmax});
-      const double dy = std::max({o.ymin - p.y, 0.0, p.y - o.ymax});
-      if (dx * dx + dy * dy < d * d) d = std::min(d, distanceToEdges(scene_.obstacles[i], p));
-    }
+    const Box at{p.x, p.y, p.x, p.y};
+    for (size_t i = 0; i < boxes_.size(); ++i)
+      if (boxes_[i].distance2(at) < d * d) d = std::min(d, distanceToEdges(scene_.obstacles[i], p));
     return d;
   }
 
@@ -70,24 +67,24 @@ Pose alongHeading(const Config& q, size_t robot, Vec2 to) {
 
 }  // namespace
 
+Pose poseWithPointAt(Vec2 local, Vec2 at, double angle) {
+  const Vec2 offset = Transform(Pose{0, 0, angle})(local);
+  return {at.x - offset.x, at.y - offset.y, angle};
+}
+
 std::vector<Config> turnAbout(const Config& a, const Config& b, size_t robot, Vec2 centre, Vec2 at,
                               double maxStep) {
   const size_t x = 3 * robot;
   const double from = a[x + 2], to = b[x + 2];
-  auto spun = [&](double angle) {  // the reference point where `centre` lands on `at`
-    const Vec2 offset = Transform(Pose{0, 0, angle})(centre);
-    return Pose{at.x - offset.x, at.y - offset.y, angle};
-  };
+  auto spun = [&](double angle) { return poseWithPointAt(centre, at, angle); };
   std::vector<Pose> poses{alongHeading(a, robot, {spun(from).x, spun(from).y})};
   const size_t steps = std::max<size_t>(1, size_t(std::ceil(std::fabs(to - from) / maxStep)));
   for (size_t k = 0; k <= steps; ++k) poses.push_back(spun(from + (to - from) * double(k) / steps));
   poses.push_back(alongHeading(b, robot, {spun(to).x, spun(to).y}));
   std::vector<Config> out;
   for (size_t k = 0; k < poses.size(); ++k) {
-    const double t = double(k + 1) / double(poses.size() + 1);
-    Config q(a.size());
-    for (size_t c = 0; c < a.size(); ++c) q[c] = a[c] + t * (b[c] - a[c]);
-    q[x] = poses[k].x, q[x + 1] = poses[k].y, q[x + 2] = poses[k].theta;
+    Config q = lerp(a, b, double(k + 1) / double(poses.size() + 1));
+    setPose(q, robot, poses[k]);
     out.push_back(std::move(q));
   }
   return out;

@@ -21,6 +21,10 @@ double wallDistance(const Scene& scene, Vec2 p);
 /// thousandth of where it began.
 Vec2 clearestNear(const Scene& scene, Vec2 p, double step, double reach);
 
+/// The pose at `angle` that puts the robot's own point `local` at `at` (the world): the robot
+/// turning about that point held there. Its inverse is Transform(pose)(local).
+Pose poseWithPointAt(Vec2 local, Vec2 at, double angle);
+
 /// The waypoints strictly between `a` and `b` of a motion in which `robot`, at `a`'s angle,
 /// moves along its heading (its x axis) and then across it until its point `centre` (its own
 /// frame) is at `at` (the world), turns there about it to `b`'s angle in steps of at most
