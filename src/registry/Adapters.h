@@ -27,9 +27,10 @@ std::vector<PlannerInfo> omplPlannerInfos();
 /// then optimised (path/Optimize.h) within the time limit, when optimize is 1.
 PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault);
 
-/// Sides of the polygons MMS plans on in place of discs, by default: slices of many discs
-/// cost about sides^1.8 (100 discs among triangles: 2.5 s at 16, 9 s at 32).
-constexpr int kPlanningDiscSides = 16;
+/// Sides of the polygons MMS plans on in place of discs, by default: 32 below kOrderedFrom
+/// robots, where slices are cheap, and 16 from there, as slices of many discs cost about
+/// sides^1.8 (100 discs among triangles: 2.5 s at 16, 9 s at 32).
+constexpr int kFewDiscSides = 32, kManyDiscSides = 16;
 
 /// `info` with the parameter disc-sides: its planner plans on stand-ins of that many sides for
 /// the scene's discs (robots and obstacles).

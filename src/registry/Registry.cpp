@@ -37,18 +37,22 @@ PlannerInfo withDiscStandIns(PlannerInfo info) {
   const ParamSpec sides{
       "disc-sides",
       ParamSpec::Type::Integer,
-      8,
+      0,
       256,
-      double(kPlanningDiscSides),
+      0,
       "Sides of the polygons MMS plans on in place of exact discs (each around its disc, so a "
       "passage narrower than its disc by less than what they add, 1/cos(pi/sides) - 1 of the "
       "radius, is missed: 2 % at 16, 0.5 % at 32); slices of many discs cost about sides^1.8; "
-      "paths are certified on the exact discs whatever the sides (default " +
-          formatNumber(kPlanningDiscSides) + ")"};
+      "paths are certified on the exact discs whatever the sides. 8 to 256, or 0: " +
+          std::to_string(kFewDiscSides) + " below " + std::to_string(kOrderedFrom) + " robots, " +
+          std::to_string(kManyDiscSides) + " from there (default 0)"};
   info.params.push_back(sides);
   info.make = [make = info.make, sides](const Scene& scene, const PlannerParams& params,
                                         const std::string& source) {
-    const int n = int(paramValue(params, sides));
+    int n = int(paramValue(params, sides));
+    if (n != 0 && n < 8)
+      throw InputError("--disc-sides: " + std::to_string(n) + " is neither 0 nor in [8, 256]");
+    if (n == 0) n = scene.robots.size() < kOrderedFrom ? kFewDiscSides : kManyDiscSides;
     return scene.hasDiscs() ? make(withDiscSides(scene, n), params, source)
                             : make(scene, params, source);
   };

@@ -171,12 +171,12 @@ TEST(Registry, TwoRobotMmsSolvedAgainAfterACutGivesAFreshRunsPath) {
   }
 }
 
-// MMS plans on polygons around discs: a gap 1 % wider than a disc, across the direction of an
-// 8-gon's vertices (8 % wider than the disc there), is closed to 8 sides and open to 64; the
-// path found is certified on the disc itself.
-TEST(Registry, DiscSidesSetHowCloselyMmsPlansAroundDiscs) {
-  const double c = std::cos(M_PI / 8), sn = std::sin(M_PI / 8);
-  auto turned = [&](Vec2 p) {  // about the centre, so the gap lies across a vertex direction
+// A disc of radius 1 must pass a gap 1 % wider than itself, which lies across the direction
+// `angle` (turned about the scene's centre): no straight way, one slice.
+namespace {
+Scene discGap(double angle) {
+  const double c = std::cos(angle), sn = std::sin(angle);
+  auto turned = [&](Vec2 p) {
     return Vec2{5 + c * (p.x - 5) - sn * (p.y - 5), 5 + sn * (p.x - 5) + c * (p.y - 5)};
   };
   Scene s;
@@ -184,24 +184,45 @@ TEST(Registry, DiscSidesSetHowCloselyMmsPlansAroundDiscs) {
   for (const Box& b : {Box{-3, 4.5, 3.99, 5.5}, Box{6.01, 4.5, 13, 5.5}})
     s.obstacles.push_back({turned({b.xmin, b.ymin}), turned({b.xmax, b.ymin}),
                            turned({b.xmax, b.ymax}), turned({b.xmin, b.ymax})});
-  s.robots = {exactDiscRobot(0, 1, turned({2, 2}), turned({2, 8}))};  // no straight way
-  for (const int sides : {8, 64}) {
-    PlannerParams p;
-    p.values["disc-sides"] = sides;
-    p.values["optimize"] = 0;
-    const PlanResult r =
-        makePlanner("mms", s, p)->solve(Termination(planSeconds(sides == 8 ? 1 : 20)));
-    EXPECT_EQ(r.status == PlanStatus::Found, sides == 64) << sides << " sides";
-    if (r.status == PlanStatus::Found) {
-      EXPECT_TRUE(r.certificate.ok);
+  s.robots = {exactDiscRobot(0, 1, turned({2, 2}), turned({2, 8}))};
+  return s;
+}
+}  // namespace
+
+// MMS plans on polygons around discs, as wide as the disc across their edges and wider across
+// their vertices (8 % at 8 sides, 2 % at 16, 0.5 % at 32): a gap 1 % wider than the disc across
+// a vertex direction is closed to 8 and 16 sides and open to 64, and to the default for one
+// robot (32). A path found is certified on the disc itself.
+TEST(Registry, DiscSidesSetHowCloselyMmsPlansAroundDiscs) {
+  struct Case {
+    double angle;  // a vertex direction of the polygon of `closed` sides
+    int closed, open;
+  };
+  for (const Case& k : {Case{M_PI / 8, 8, 64}, Case{M_PI / 16, 16, 0}}) {
+    const Scene s = discGap(k.angle);
+    for (const int sides : {k.closed, k.open}) {
+      PlannerParams p;
+      p.values["disc-sides"] = sides;
+      p.values["optimize"] = 0;
+      const PlanResult r =
+          makePlanner("mms", s, p)->solve(Termination(planSeconds(sides == k.closed ? 1 : 20)));
+      EXPECT_EQ(r.status == PlanStatus::Found, sides == k.open) << sides << " sides";
+      if (r.status == PlanStatus::Found) {
+        EXPECT_TRUE(r.certificate.ok);
+      }
     }
   }
-  // The command line says where to look when the stand-ins closed the way.
+  // The command line says where to look when the stand-ins closed the way, and refuses sides
+  // that are no polygon worth planning on.
   TempDir dir;
   const std::string scene = dir.path("gap.json");
-  saveScene(s, scene);
+  saveScene(discGap(M_PI / 8), scene);
   const Outcome o = runMms("plan " + quote(scene) + " --planner mms --disc-sides 8 -o " +
                            quote(dir.path("p.json")));
   EXPECT_EQ(o.code, 1) << o.out << o.err;
   EXPECT_NE(o.out.find("more --disc-sides"), std::string::npos) << o.out;
+  const Outcome bad =
+      runMms("plan " + quote(scene) + " --disc-sides 5 -o " + quote(dir.path("p.json")));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(bad.err, "--disc-sides: 5 is neither 0 nor in [8, 256]\n");
 }
