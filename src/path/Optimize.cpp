@@ -12,15 +12,19 @@ namespace mms {
 
 namespace {
 
+// One robot's cost from pose a to pose b.
+double poseCost(const CollisionChecker& checker, size_t robot, const Pose& a, const Pose& b) {
+  return std::hypot(b.x - a.x, b.y - a.y) + checker.radius(robot) * std::fabs(b.theta - a.theta);
+}
+
 double segmentCost(const CollisionChecker& checker, const Config& a, const Config& b) {
   double c = 0;
   for (size_t i = 0; 3 * i < a.size(); ++i) {
-    const double dx = b[3 * i] - a[3 * i], dy = b[3 * i + 1] - a[3 * i + 1];
-    const double dt = b[3 * i + 2] - a[3 * i + 2];
+    const Pose p = poseOf(a, i), q = poseOf(b, i);
     // Robots that stay put add exactly 0: among hundreds moved one at a time most do, and
     // hypot is a call into libm.
-    if (dx == 0 && dy == 0 && dt == 0) continue;
-    c += std::hypot(dx, dy) + checker.radius(i) * std::fabs(dt);
+    if (p.x == q.x && p.y == q.y && p.theta == q.theta) continue;
+    c += poseCost(checker, i, p, q);
   }
   return c;
 }
@@ -374,9 +378,12 @@ class Optimizer {
     } else if (!partialShortcut(w, st, total)) {
       return;
     }
-    if (!st.to.inserted) w[st.begin + (partial ? st.end - st.begin : 0)] = st.aimed;
-    const size_t afterFrom = partial ? st.end : st.begin;  // where the inner waypoints end now
-    if (st.to.inserted) w.insert(w.begin() + long(afterFrom), st.aimed);
+    // The first waypoint after those between is `to`, or follows it when `to` is new.
+    const size_t after = partial ? st.end : st.begin;
+    if (st.to.inserted)
+      w.insert(w.begin() + long(after), st.aimed);
+    else
+      w[after] = st.aimed;
     if (st.from.inserted) w.insert(w.begin() + long(st.begin), st.from.q);
     changed();
     ++s_.accepted;
@@ -413,38 +420,28 @@ class Optimizer {
     const size_t robot = rng_.below(scene_.robots.size());
     Part part = Part(rng_.below(3));
     if (!rigid(robot)) part = Part::Translation;
-    std::vector<size_t> coords;
-    if (part != Part::Rotation) coords = {3 * robot, 3 * robot + 1};
-    if (part != Part::Translation) {
-      coords.push_back(3 * robot + 2);
-      aimEnd(w, st, robot);
-    }
+    if (part != Part::Translation) aimEnd(w, st, robot);
     // The robot's own poses along the stretch, before and after: the others' cost is the same.
-    const size_t n = st.end - st.begin + 2;
-    auto pose = [&](const Config& q) {
-      return Config(q.begin() + 3 * long(robot), q.begin() + 3 * long(robot) + 3);
-    };
-    std::vector<Config> before{pose(st.from.q)}, after = before;
+    const Pose a = poseOf(st.from.q, robot), b = poseOf(st.aimed, robot);
+    std::vector<Pose> before{a}, after{a};
     const std::vector<double>& cum = cumulativeCost(w);
     const double lead = segmentCost(checker_, st.from.q, w[st.begin]);
     for (size_t k = st.begin; k < st.end; ++k) {
-      before.push_back(pose(w[k]));
+      before.push_back(poseOf(w[k], robot));
       const double t = (lead + cum[k] - cum[st.begin]) / st.oldCost;
-      Config p = before.back();
-      for (const size_t x : coords)
-        p[x - 3 * robot] = st.from.q[x] + t * (st.aimed[x] - st.from.q[x]);
+      Pose p = before.back();
+      if (part != Part::Rotation) p.x = a.x + t * (b.x - a.x), p.y = a.y + t * (b.y - a.y);
+      if (part != Part::Translation) p.theta = a.theta + t * (b.theta - a.theta);
       after.push_back(p);
     }
-    before.push_back(pose(st.to.q));
-    after.push_back(pose(st.aimed));
+    before.push_back(poseOf(st.to.q, robot));
+    after.push_back(b);
     if (robotCost(after, robot) >= robotCost(before, robot) - 1e-12 * total) return false;
-    std::vector<Config> stretch;
-    stretch.reserve(n);
-    stretch.push_back(st.from.q);
+    std::vector<Config> stretch{st.from.q};
+    stretch.reserve(st.end - st.begin + 2);
     for (size_t k = st.begin; k < st.end; ++k) {
       stretch.push_back(w[k]);
-      std::copy(after[k - st.begin + 1].begin(), after[k - st.begin + 1].end(),
-                stretch.back().begin() + 3 * long(robot));
+      setPose(stretch.back(), robot, after[k - st.begin + 1]);
     }
     stretch.push_back(st.aimed);
     if (!certified(stretch)) return false;
@@ -452,13 +449,11 @@ class Optimizer {
     return true;
   }
 
-  // One robot's cost along its poses (x, y, angle).
-  double robotCost(const std::vector<Config>& poses, size_t robot) const {
+  // One robot's cost along its poses.
+  double robotCost(const std::vector<Pose>& poses, size_t robot) const {
     double c = 0;
-    for (size_t k = 1; k < poses.size(); ++k) {
-      const double dx = poses[k][0] - poses[k - 1][0], dy = poses[k][1] - poses[k - 1][1];
-      c += std::hypot(dx, dy) + checker_.radius(robot) * std::fabs(poses[k][2] - poses[k - 1][2]);
-    }
+    for (size_t k = 1; k < poses.size(); ++k)
+      c += poseCost(checker_, robot, poses[k - 1], poses[k]);
     return c;
   }
 

@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -25,7 +24,6 @@ bool outOfMemory(const std::system_error& e) {
 
 namespace {
 
-std::atomic<bool> allocationFailed{false};
 double limitMegabytes = 0;
 std::terminate_handler previousTerminate = nullptr;
 // The line that reports the failure, composed ahead: the failure must not allocate.
@@ -48,7 +46,6 @@ void composeLine(const char* readingFile) {
 // safely (their half-linked DCEL crashes the destructor), and nothing is left to save, for
 // outputs are written whole at the end of a command (AtomicFile.h).
 [[noreturn]] void endOutOfMemory() {
-  allocationFailed = true;
   (void)!::write(STDERR_FILENO, line, size_t(lineLength));
   ::_exit(3);
 }
@@ -77,7 +74,6 @@ void gmpFree(void* p, size_t) { std::free(p); }
       if (outOfMemory(error)) endOutOfMemory();
     } catch (...) {
     }
-  if (allocationFailed) endOutOfMemory();
   if (previousTerminate) previousTerminate();
   std::abort();
 }
