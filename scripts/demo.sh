@@ -12,7 +12,8 @@ cmake --build build -j"$(nproc)" --target mms
 
 scene=scenes/two-robots/pacman-0.5.json
 build/mms validate "$scene"
-build/mms plan "$scene" --planner mms --seed 1 -o demo-path.json --svg demo.svg
+build/mms plan "$scene" --planner mms --seed 1 -o demo-path.json --svg demo.svg \
+  --record demo-record.json
 build/mms check "$scene" demo-path.json
-build/mms view "$scene" demo-path.json -o demo.html
-echo "demo: open demo.html (player: play/pause, slider, speed) or demo.svg in a browser to watch the Pacman swallow the square and the two swap places"
+build/mms view "$scene" demo-path.json --record demo-record.json -o demo.html
+echo "demo: open demo.html (player: play/pause, slider, speed; below it, a second slider steps through what MMS built) or demo.svg in a browser to watch the Pacman swallow the square and the two swap places"

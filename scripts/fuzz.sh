@@ -21,8 +21,8 @@ bash scripts/setup.sh
 # -O1 keeps assertions (no NDEBUG) while staying fast enough for millions of runs.
 cmake -S . -B build-fuzz -DMMS_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=None \
   -DCMAKE_CXX_FLAGS="-O1" -DMMS_BUILD_TESTS=OFF -DMMS_BUILD_BENCH=OFF -DMMS_BUILD_PYTHON=OFF >/dev/null
-targets="FuzzScene:scene FuzzPath:path FuzzDiscopygal:discopygal FuzzOmplCfg:cfg FuzzCollada:collada FuzzQueries:queries"
-cmake --build build-fuzz -j"$(nproc)" --target FuzzScene FuzzPath FuzzDiscopygal FuzzOmplCfg FuzzCollada FuzzQueries
+targets="FuzzScene:scene FuzzPath:path FuzzDiscopygal:discopygal FuzzOmplCfg:cfg FuzzCollada:collada FuzzQueries:queries FuzzRecord:record"
+cmake --build build-fuzz -j"$(nproc)" --target FuzzScene FuzzPath FuzzDiscopygal FuzzOmplCfg FuzzCollada FuzzQueries FuzzRecord
 
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 mkdir -p build-fuzz/crashes
@@ -31,7 +31,7 @@ fuzz_one() {
   local target=${1%%:*} corpus=${1##*:}
   # JSON readers get the JSON dictionary; the INI and XML readers find their tokens alone.
   local dict=()
-  case $corpus in scene | path | discopygal | queries) dict=(-dict=fuzz/json.dict) ;; esac
+  case $corpus in scene | path | discopygal | queries | record) dict=(-dict=fuzz/json.dict) ;; esac
   mkdir -p "build-fuzz/corpus/$corpus"
   local log="build-fuzz/$target.log"
   if ! "build-fuzz/$target" "${limit[@]}" -max_len=8192 -timeout=10 -rss_limit_mb=4096 \

@@ -282,6 +282,11 @@ Command addPlan(CLI::App& app) {
             "One robot: keep the free-space cells the path uses and the lines' points in "
             "the path file, for mms view (auto then runs MMS alone)");
         planCmd->add_option(
+            "--record", pa.record,
+            "Write a record of the planning (mms-record/1): what the planner built and when "
+            "(MMS: its slices' cells, lines' arcs, subspaces and components; OMPL: its tree "
+            "or graph), for mms view --record; with several queries, numbered files");
+        planCmd->add_option(
             "--queries", pa.queries,
             "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "
             "\"queries\": [{\"start\": [x,y,theta], \"goal\": [x,y,theta]}, ...]}; with -o/--svg, "
@@ -343,6 +348,9 @@ Command addView(CLI::App& app) {
         sceneAndPath(cmd, a.scene, a.path, "Scene file (any format mms reads)",
                      "Path file to play");
         outputOption(cmd, a.output, "HTML file to write (-: standard output)");
+        cmd->add_option("--record", a.record,
+                        "A record of the planning (mms plan --record): a second slider steps "
+                        "through what the planner built, with layers and its phases");
       });
 }
 

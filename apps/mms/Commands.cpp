@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -10,6 +11,7 @@
 #include "io/AnyScene.h"
 #include "io/Discopygal.h"
 #include "io/PathIO.h"
+#include "io/RecordIO.h"
 #include "io/SceneIO.h"
 #include "mms/Errors.h"
 #include "render/HtmlViewer.h"
@@ -129,7 +131,10 @@ int view(const ViewArgs& a) {
   const Scene scene = readScene(a.scene, true);
   Path path;
   if (!a.path.empty()) path = loadPath(a.path, scene);
-  writeFileAtomically(a.output, renderHtmlViewer(scene, a.path.empty() ? nullptr : &path));
+  std::optional<RecordFile> record;
+  if (!a.record.empty()) record = loadRecord(a.record, scene.robots.size());
+  writeFileAtomically(a.output, renderHtmlViewer(scene, a.path.empty() ? nullptr : &path,
+                                                 record ? &*record : nullptr));
   std::printf("%s: written (open it in a browser; #t=0.5 shows the motion half-way)\n",
               a.output.c_str());
   return 0;

@@ -29,6 +29,7 @@ int check(const CheckArgs& a);
 
 struct ViewArgs {
   std::string scene, path, output;
+  std::string record;  // mms-record/1: the planning's growth beside the path
 };
 int view(const ViewArgs& a);
 
@@ -57,6 +58,7 @@ struct PlanArgs : RunArgs {
   bool svgRoadmap = false;   // draw line points and the path's slice cells
   bool saveRoadmap = false;  // keep them in the path file (for mms view)
   std::string queries;       // mms-queries/1 file: several queries on one roadmap
+  std::string record;        // mms-record/1 file: what the planner built and when
   std::string planner = mms::kDefaultPlanner;
   std::string statsJson;  // write a machine-readable summary of the run here
   PlannerParams params;   // the planner's declared parameters the user gave

@@ -9,6 +9,7 @@
 #include "Commands.h"
 #include "io/PathIO.h"
 #include "io/QueriesIO.h"
+#include "io/RecordIO.h"
 #include "io/RunSummary.h"
 #include "io/SceneIO.h"
 #include "mms/Errors.h"
@@ -194,6 +195,13 @@ class ProgressLines {
   std::thread heartbeat_;
 };
 
+// The record of a run (--record), found or not: why a planner missed a way is what it shows.
+void writeRecord(const PlanArgs& a, const PlanResult& r, const std::string& file) {
+  PlanRecord none;  // a planner that records nothing still gets its statistics written
+  none.planner = a.planner;
+  saveRecord(r.record ? *r.record : none, r.stats, file);
+}
+
 // The queries to answer: the scene's own, or those of --queries (one-robot MMS only, as is the
 // roadmap's picture in the path file).
 std::vector<Query> queriesOf(const PlanArgs& a, const Scene& scene, bool multiQuery) {
@@ -220,8 +228,10 @@ std::vector<Query> queriesOf(const PlanArgs& a, const Scene& scene, bool multiQu
 }  // namespace
 
 int plan(const PlanArgs& a) {
-  for (const auto& [path, option] :
-       {std::pair{a.output, "-o"}, {a.svg, "--svg"}, {a.statsJson, "--stats-json"}})
+  for (const auto& [path, option] : {std::pair{a.output, "-o"},
+                                     {a.svg, "--svg"},
+                                     {a.statsJson, "--stats-json"},
+                                     {a.record, "--record"}})
     checkWritable(path, option);
   const Scene scene = readScene(a.scene, a.quiet);
   // An unknown planner is the registry's to name (makePlanner, below).
@@ -230,6 +240,7 @@ int plan(const PlanArgs& a) {
   PlannerParams params = a.params;
   params.seed = a.seed;
   params.roadmapPicture = a.saveRoadmap || a.svgRoadmap;
+  params.record = !a.record.empty();
 #if !defined(__SANITIZE_ADDRESS__)
   params.exitsAfterRun = true;  // under ASan, free everything so leaks stay visible
 #endif
@@ -255,8 +266,9 @@ int plan(const PlanArgs& a) {
       r = planner->solve(Termination(limit, sigintFlag()), lines.callback());
     }
     if (interruptRequested()) throw Interrupted();
-    summaries.push_back(toJson(summarize(a.scene, a.planner, a.seed, a.timeLimit, r)));
     const bool many = queries.size() > 1;
+    if (params.record) writeRecord(a, r, many ? numbered(a.record, qi) : a.record);
+    summaries.push_back(toJson(summarize(a.scene, a.planner, a.seed, a.timeLimit, r)));
     const int code = report(a, queryScene, label, r, many ? numbered(a.output, qi) : a.output,
                             many ? numbered(a.svg, qi) : a.svg);
     exitCode = std::max(exitCode, code);

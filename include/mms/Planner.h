@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "mms/Certificate.h"
+#include "mms/Record.h"
 #include "mms/Scene.h"
 #include "mms/Termination.h"
 
@@ -52,6 +53,7 @@ struct PlannerParams {
   /// The process exits right after the run: a planner may leave its memory for the OS to take
   /// back (freeing a million OMPL states would overrun the time limit by seconds).
   bool exitsAfterRun = false;
+  bool record = false;  // fill PlanResult::record (every planner)
 };
 
 /// Where a run's time went and what it built: one struct for every planner. The command line
@@ -98,6 +100,9 @@ struct PlanResult {
   /// number, a flag, a named choice such as objective "length").
   std::vector<ParamSpec> parameterSpecs;
   RoadmapPicture roadmap;  // when asked for and the planner has one
+  /// What was built and when (PlannerParams::record); shared, not copied, as results pass
+  /// through the optimiser and the portfolio.
+  std::shared_ptr<const PlanRecord> record;
   bool found() const { return status == PlanStatus::Found; }
 };
 

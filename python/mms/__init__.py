@@ -46,6 +46,8 @@ __all__ = [
     "check",
     "load_path",
     "render_svg",
+    "view",
+    "View",
     "bench",
     "load_bench",
     "executable",
@@ -160,6 +162,8 @@ class Result:
     scene = property(lambda self: self._r.scene)
     stats = property(lambda self: self._r.stats)
     parameters = property(lambda self: self._r.parameters)
+    record = property(lambda self: self._r.record, doc="""What the planner built and when (mms-record/1 as a
+        dict, docs/formats.md), when planned with record=True; else None.""")
     certificate = property(lambda self: Check(self._r.certificate))
 
     @property
@@ -206,7 +210,7 @@ class Result:
 
 
 def plan(scene: Scene, planner: str = "auto", *, seed: int = 1, time_limit: float = 60.0,
-         progress=None, **params) -> Result:
+         progress=None, record: bool = False, **params) -> Result:
     """Plans a certified path for every robot of `scene` from start to goal.
 
     planner: a name from mms.planners() ("auto": MMS racing RRT-Connect, "mms", "prm",
@@ -215,7 +219,8 @@ def plan(scene: Scene, planner: str = "auto", *, seed: int = 1, time_limit: floa
     objective="clearance"; each is checked against the planner's declared range.
     progress: called with the statistics so far (a dict, as Result.stats) after each of the
     planner's rounds, at most every 50 ms, on the calling thread; an exception it raises
-    stops the planner and propagates.
+    stops the planner and propagates. record: keep what the planner built and when
+    (Result.record, mms.view).
 
     The GIL is released while the planner works; Ctrl-C stops it at its next manifold and
     raises KeyboardInterrupt. Raises InputError for a bad argument or a scene the planner
@@ -225,7 +230,36 @@ def plan(scene: Scene, planner: str = "auto", *, seed: int = 1, time_limit: floa
     _check_keywords(_text(planner, "mms.plan: planner"), params)
     return Result(_mms.plan(scene, _text(planner, "mms.plan: planner"),
                             _whole(seed, "mms.plan: seed"),
-                            _number(time_limit, "mms.plan: time_limit"), params, progress))
+                            _number(time_limit, "mms.plan: time_limit"), params, progress,
+                            _flag(record, "mms.plan: record")))
+
+
+class View:
+    """The viewer's page for a result (as `mms view` writes it): the scene, the path, and with
+    a record its growth. `html` is the self-contained page; notebooks show it inline (in an
+    iframe of its own, so that several views do not share one document)."""
+
+    def __init__(self, html: str, height: int = 900):
+        self.html = html
+        self.height = height
+
+    def save(self, file: str | _os.PathLike) -> None:
+        """Writes the page to `file`."""
+        with open(_path_text(file, "View.save"), "w", encoding="utf-8") as f:
+            f.write(self.html)
+
+    def _repr_html_(self) -> str:
+        import html as _html
+        return (f'<iframe srcdoc="{_html.escape(self.html, quote=True)}" '
+                f'style="width:100%;height:{int(self.height)}px;border:0"></iframe>')
+
+
+def view(result: Result, *, height: int = 900) -> View:
+    """The viewer's page for `result`: plays its path and, when planned with record=True,
+    steps through what the planner built (docs/record.md)."""
+    if not isinstance(result, Result):
+        raise InputError(f"mms.view: result: expected an mms.Result, not {type(result).__name__}")
+    return View(result._r.view_html(), _whole(height, "mms.view: height", 100000))
 
 
 def _check_keywords(planner: str, params: dict) -> None:
@@ -369,6 +403,12 @@ def _whole(v, who: str, limit: int = (1 << 64) - 1) -> int:
         raise InputError(f"{who}={v!r}: expected a whole number")
     if not 0 <= v <= limit:
         raise InputError(f"{who}={v!r}: must be in [0, {limit}]")
+    return v
+
+
+def _flag(v, who: str) -> bool:
+    if not isinstance(v, bool):
+        raise InputError(f"{who}={v!r}: expected True or False")
     return v
 
 

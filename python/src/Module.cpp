@@ -18,9 +18,11 @@
 #include "io/AnyScene.h"
 #include "io/Json.h"
 #include "io/PathIO.h"
+#include "io/RecordIO.h"
 #include "io/RunSummary.h"
 #include "io/SceneIO.h"
 #include "mms/mms.h"
+#include "render/HtmlViewer.h"
 #include "render/SvgRenderer.h"
 #include "scenarios/Catalog.h"
 
@@ -247,7 +249,7 @@ PlanResult solveReleasingGil(Planner& planner, double timeLimit, const py::objec
 }
 
 PyResult plan(const PyScene& s, const std::string& planner, uint64_t seed, double timeLimit,
-              const py::dict& params, const py::object& progress) {
+              const py::dict& params, const py::object& progress, bool record) {
   const PlannerInfo* info = findPlanner(planner);
   if (!info) {
     std::string known;
@@ -259,6 +261,7 @@ PyResult plan(const PyScene& s, const std::string& planner, uint64_t seed, doubl
                      ": not in [0.01, 1e+07] seconds");
   PlannerParams pp;
   pp.seed = seed;
+  pp.record = record;
   for (const auto& [k, v] : params) {
     const ParamSpec& spec = paramNamed(*info, k.cast<std::string>());
     pp.values[spec.name] = paramValue(spec, v);
@@ -396,6 +399,21 @@ PYBIND11_MODULE(_mms, m) {
                              [](const PyResult& r) { return fromJson(parametersJson(r.result)); })
       .def_property_readonly(
           "certificate", [](const PyResult& r) { return certificateDict(r.result.certificate); })
+      .def_property_readonly("record",
+                             [](const PyResult& r) -> py::object {
+                               if (!r.result.record) return py::none();
+                               return fromJson(recordToJson(*r.result.record, r.result.stats));
+                             })
+      // The viewer's page (mms view): the scene, the path when found, the record when kept.
+      .def("view_html",
+           [](const PyResult& r) {
+             Path path;
+             path.waypoints = r.result.waypoints;
+             std::optional<RecordFile> record;
+             if (r.result.record) record = RecordFile{*r.result.record, r.result.stats};
+             return renderHtmlViewer(*r.scene.scene, r.result.found() ? &path : nullptr,
+                                     record ? &*record : nullptr);
+           })
       .def("save", [](const PyResult& r, const std::string& file) {
         if (!r.result.found())
           throw InputError(file + ": no path to save (the run's status is " +

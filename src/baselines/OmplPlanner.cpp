@@ -1,5 +1,7 @@
 #include "baselines/OmplPlanner.h"
 
+#include <ompl/base/DiscreteMotionValidator.h>
+#include <ompl/base/PlannerData.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/samplers/BridgeTestValidStateSampler.h>
 #include <ompl/base/samplers/GaussianValidStateSampler.h>
@@ -21,10 +23,13 @@
 #include <ompl/util/RandomNumbers.h>
 
 #include <atomic>
+#include <boost/functional/hash.hpp>
 #include <cmath>
 #include <mutex>
+#include <unordered_map>
 
 #include "baselines/UobprmSampler.h"
+#include "graph/RoadmapRecord.h"
 
 namespace mms {
 
@@ -131,6 +136,50 @@ class CertifiedMotions : public ob::MotionValidator {
   const Layout& layout_;
   const CollisionChecker& checker_;
   mutable Config a_, b_;  // OMPL's planners check motions on one thread
+};
+
+// For a record of the planning: when each state was first an end of a motion found free (OMPL's
+// trees and roadmaps keep no times). One entry per such state, under a lock: PRM checks motions
+// on two threads.
+class StampedMotions : public ob::MotionValidator {
+ public:
+  StampedMotions(const ob::SpaceInformationPtr& si, ob::MotionValidatorPtr inner,
+                 const Stopwatch& clock)
+      : ob::MotionValidator(si), inner_(std::move(inner)), clock_(clock) {}
+  bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
+    return stamped(inner_->checkMotion(s1, s2), s1, s2);
+  }
+  bool checkMotion(const ob::State* s1, const ob::State* s2,
+                   std::pair<ob::State*, double>& lastValid) const override {
+    return stamped(inner_->checkMotion(s1, s2, lastValid), s1, s2);
+  }
+  /// When `s` was stamped, or `otherwise`.
+  float at(const ob::State* s, float otherwise) const {
+    const std::lock_guard lock(mutex_);
+    const auto it = times_.find(key(s));
+    return it == times_.end() ? otherwise : it->second;
+  }
+
+ private:
+  std::vector<double> key(const ob::State* s) const {
+    std::vector<double> v;
+    si_->getStateSpace()->copyToReals(v, s);
+    return v;
+  }
+  bool stamped(bool ok, const ob::State* s1, const ob::State* s2) const {
+    if (!ok) return false;
+    const auto now = float(clock_.seconds());
+    auto k1 = key(s1), k2 = key(s2);
+    const std::lock_guard lock(mutex_);
+    times_.emplace(std::move(k1), now);
+    times_.emplace(std::move(k2), now);
+    return true;
+  }
+
+  ob::MotionValidatorPtr inner_;
+  const Stopwatch& clock_;
+  mutable std::mutex mutex_;
+  mutable std::unordered_map<std::vector<double>, float, boost::hash<std::vector<double>>> times_;
 };
 
 // Uniform samples drawn again until free: a tree then grows only towards free space. Where
@@ -369,6 +418,61 @@ class ProgressReporter {
   mutable std::atomic<double> next{1};
 };
 
+// The planner's tree or roadmap with its states' stamps (the end of the run for a state no free
+// motion reached), every k-th state kept within `budget` numbers and the edges between
+// those kept; how many states there were by when, from them all.
+RecordTree treeOf(const ob::Planner& planner, const ob::SpaceInformationPtr& si,
+                  const Layout& layout, const StampedMotions& stamps, float end, size_t budget,
+                  RecordGrowth& growth) {
+  ob::PlannerData data(si);
+  planner.getPlannerData(data);
+  RecordTree t;
+  t.totalStates = data.numVertices();
+  t.totalEdges = data.numEdges();
+  const size_t n = t.totalStates, numbers = 3 * layout.scene.robots.size();
+  const size_t keep = std::max<size_t>(1, budget / numbers),
+               stride = std::max<size_t>(1, (n + keep - 1) / keep);
+  constexpr uint32_t kDropped = ~uint32_t(0);
+  std::vector<uint32_t> kept(n, kDropped);
+  std::vector<std::pair<uint32_t, float>> all;
+  Config q;
+  for (size_t i = 0; i < n; ++i) {
+    const ob::State* s = data.getVertex(unsigned(i)).getState();
+    all.emplace_back(0, stamps.at(s, end));
+    if (i % stride) continue;
+    kept[i] = uint32_t(t.states.size());
+    layout.toConfig(s, q);
+    t.states.push_back(q);
+    t.at.push_back(all.back().second);
+  }
+  growth = growthOf(std::move(all), {"states"});
+  std::vector<unsigned> out;
+  for (size_t i = 0; i < n; ++i) {
+    if (kept[i] == kDropped) continue;
+    data.getEdges(unsigned(i), out);
+    for (unsigned j : out)
+      if (kept[j] != kDropped) t.edges.push_back({kept[i], kept[j]});
+  }
+  return t;
+}
+
+// The motion validator: OMPL's discrete one at the resolution, or mms's certifier; with a
+// record asked for, wrapped to stamp when states are reached (returned, else null).
+std::shared_ptr<StampedMotions> setMotions(const ob::SpaceInformationPtr& si,
+                                           const OmplSettings& settings, const Layout& layout,
+                                           const CollisionChecker& checker,
+                                           const Stopwatch& clock) {
+  si->setStateValidityCheckingResolution(settings.resolution);
+  if (settings.certifiedMotions)
+    si->setMotionValidator(std::make_shared<CertifiedMotions>(si, layout, checker));
+  if (!settings.record) return nullptr;
+  ob::MotionValidatorPtr inner = si->getMotionValidator();
+  if (!inner) inner = std::make_shared<ob::DiscreteMotionValidator>(si);
+  auto stamps = std::make_shared<StampedMotions>(si, std::move(inner), clock);
+  si->setMotionValidator(stamps);
+  return stamps;
+}
+
 }  // namespace
 
 OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop,
@@ -389,9 +493,7 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   }
   const ob::SpaceInformationPtr si = setup.getSpaceInformation();
   setup.setStateValidityChecker(std::make_shared<Validity>(si, layout, checker));
-  si->setStateValidityCheckingResolution(settings.resolution);
-  if (settings.certifiedMotions)
-    si->setMotionValidator(std::make_shared<CertifiedMotions>(si, layout, checker));
+  const std::shared_ptr<StampedMotions> stamps = setMotions(si, settings, layout, checker, total);
   const double extent = si->getMaximumExtent();
   const MadePlanner made = makePlanner(si, settings, extent);
   setup.setPlanner(made.planner);
@@ -421,6 +523,12 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   const GraphSize size = made.size();
   r.states = size.vertices;
   r.edges = size.edges;
+  if (stamps) {
+    const Stopwatch recording;
+    r.tree = treeOf(*made.planner, si, layout, *stamps, float(total.seconds()),
+                    RecordBudget{}.numbers, r.growth);
+    r.recordSeconds = recording.seconds();
+  }
   if (status != ob::PlannerStatus::EXACT_SOLUTION) {
     r.seconds = total.seconds();
     return r;

@@ -9,6 +9,7 @@
 
 #include "check/PathChecker.h"
 #include "mms/Planner.h"
+#include "mms/Record.h"
 #include "mms/Termination.h"
 
 namespace mms {
@@ -32,6 +33,8 @@ struct OmplSettings {
   /// Leave OMPL's planner and states allocated (a command-line run about to exit): freeing
   /// a million states would overrun the time limit by seconds.
   bool keepUntilExit = false;
+  /// Keeps the tree or roadmap, with when each state was reached, for a record of the planning.
+  bool record = false;
 };
 
 struct OmplResult {
@@ -44,6 +47,9 @@ struct OmplResult {
   double simplifySeconds = 0;  // OMPL's simplifier and its path's certification, after `seconds`
   size_t states = 0;           // vertices of the planner's graph or tree
   size_t edges = 0;            // its edges
+  RecordTree tree;             // with OmplSettings::record: the tree or roadmap, thinned
+  RecordGrowth growth;         // and how many states it had by when
+  double recordSeconds = 0;    // of `seconds`, reading it out
 };
 
 /// Called about once a second while OMPL's planner works (from one of its threads), with

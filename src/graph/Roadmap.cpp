@@ -8,8 +8,31 @@ uint32_t Roadmap::add(std::unique_ptr<Manifold> manifold, uint32_t group, uint32
   const auto id = uint32_t(entries_.size());
   const size_t first = graph_.nodeCount(), cells = manifold->cellCount();
   for (size_t c = 0; c < cells; ++c) graph_.addNode({id, uint32_t(c)});
-  entries_.push_back({std::move(manifold), group, index, first});
+  Entry e{std::move(manifold), group, index, first};
+  e.at = float(clock_.seconds());
+  e.round = round_;
+  entries_.push_back(std::move(e));
   return id;
+}
+
+void Roadmap::startClock() {
+  if (clockStarted_) return;
+  clock_ = Stopwatch();
+  clockStarted_ = true;
+}
+
+void Roadmap::noteSearch(size_t from, size_t to) {
+  const float now = float(clock_.seconds());
+  searches_.push_back(
+      {now, round_, entries_.size(), nodeCount(), edgeCount(), graph_.connected(from, to)});
+  if (!trackReached_) return;
+  const size_t ends[2] = {from, to};
+  for (Entry& e : entries_) {
+    const size_t cells = e.manifold->cellCount();
+    for (int s = 0; s < 2; ++s)
+      for (size_t c = 0; c < cells && e.reached[s] < 0; ++c)
+        if (graph_.connected(e.firstNode + c, ends[s])) e.reached[s] = now;
+  }
 }
 
 bool Roadmap::meeting(uint32_t a, uint32_t b, long& cellA, long& cellB) const {

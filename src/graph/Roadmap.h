@@ -9,6 +9,7 @@
 // a weave only unites the cells it meets in the union-find (which decides when to search), and
 // the search recomputes the edges of the manifolds it reaches. The roadmap's memory then grows
 // with the manifolds and their cells, not with the meetings.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -17,6 +18,8 @@
 
 #include "graph/ConnectivityGraph.h"
 #include "manifolds/Manifold.h"
+#include "mms/Record.h"
+#include "mms/Termination.h"
 
 namespace mms {
 
@@ -29,6 +32,12 @@ class Roadmap {
     size_t firstNode;
     uint32_t weave = kNoWeave;  // the weave it is in, if any, and on which side
     uint8_t side = 0;
+    // For a record of the planning: seconds since the clock started and the round it was
+    // built in; when its cells first joined the start's and the goal's component (-1: not
+    // yet, or not tracked).
+    float at = 0;
+    uint32_t round = 0;
+    std::array<float, 2> reached{-1, -1};
   };
   static constexpr uint32_t kNoWeave = ~uint32_t(0);
 
@@ -72,6 +81,23 @@ class Roadmap {
   };
   Footprint footprint(const std::vector<size_t>& path) const;
 
+  // The chronicle a record of the planning reads (mms/Record.h). Stamping costs a clock read
+  // per manifold; tracking the components a pass over the nodes per search, so it is asked for.
+  /// Starts the clock manifolds are stamped with, unless it runs (multi-query: the first query).
+  void startClock();
+  double seconds() const { return clock_.seconds(); }
+  /// Manifolds added from now on belong to round `round`.
+  void beginRound(uint32_t round) { round_ = round; }
+  /// Whether noteSearch stamps when manifolds join the start's and the goal's component.
+  void trackReached(bool on) { trackReached_ = on; }
+  /// A search between nodes from and to has run: the graph's size, and (tracked) the
+  /// manifolds now reached.
+  void noteSearch(size_t from, size_t to);
+  /// The graph path of the motion found.
+  void notePath(std::vector<size_t> nodes) { path_ = std::move(nodes); }
+  const std::vector<RecordSearch>& searches() const { return searches_; }
+  const std::vector<size_t>& pathNodes() const { return path_; }
+
  private:
   struct Weave {
     std::vector<uint32_t> sides[2];
@@ -90,6 +116,11 @@ class Roadmap {
   std::vector<Entry> entries_;
   std::vector<Weave> weaves_;
   mutable Config meeting_;  // meeting()'s scratch: no allocation per pair
+  Stopwatch clock_;
+  bool clockStarted_ = false, trackReached_ = false;
+  uint32_t round_ = 0;
+  std::vector<RecordSearch> searches_;
+  std::vector<size_t> path_;
 };
 
 }  // namespace mms

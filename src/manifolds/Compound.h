@@ -37,6 +37,10 @@ struct CompoundFrame {
   /// `q` with the carrier at `carrier` and the attached robot where it puts it.
   Config moved(const Config& q, const Pose& carrier) const;
   size_t mover() const { return carrier; }
+  void describe(RecordSubspace& out) const {
+    out.moving = carrier;
+    out.attached = long(attached);
+  }
   /// The pair turns about the carrier's reference point in steps of at most kStep radians: the
   /// attached robot's straight moves between them stray from its circle by at most
   /// |offset| kStep^2 / 8 (1.3e-5 |offset|), far inside the play of any cell worth certifying.

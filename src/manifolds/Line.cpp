@@ -202,4 +202,10 @@ int Line::arcContaining(double theta) const {
   return -1;
 }
 
+void sketchArcs(const Line& line, RecordManifold& out, bool geometry) {
+  out.point = line.point();
+  if (geometry)
+    for (const Arc& a : line.arcs()) out.arcs.emplace_back(a.lo, a.hi);
+}
+
 }  // namespace mms

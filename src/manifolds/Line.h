@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geometry/CollisionChecker.h"
+#include "mms/Record.h"
 
 namespace mms {
 
@@ -74,6 +75,9 @@ class Line {
   Vec2 p_;
   std::vector<Arc> arcs_;
 };
+
+/// A record's view of a line (mms/Record.h): its point, and its free arcs when `geometry`.
+void sketchArcs(const Line& line, RecordManifold& out, bool geometry);
 
 /// Critical angles of a robot at p in [-pi, pi), sorted (exposed for tests).
 std::vector<double> criticalAngles(const LineWorld& world, Vec2 p, LineStats* stats = nullptr);

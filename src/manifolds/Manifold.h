@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "mms/Record.h"
 #include "mms/Scene.h"
 
 namespace mms {
@@ -31,6 +32,16 @@ class Manifold {
   /// stays continuous). Nothing if no route is found.
   virtual std::optional<std::vector<Config>> motion(size_t cell, const Config& from,
                                                     const Config& to) const = 0;
+  /// What a record of the planning shows of it (mms/Record.h): its family's name and, when
+  /// `geometry`, its shape (a slice's angle and cells, a line's point and arcs). A family
+  /// that overrides nothing is recorded by name and cell count alone.
+  virtual void sketch(RecordManifold& out, bool geometry) const {
+    (void)geometry;
+    out.family = family().name;
+    out.cells = cellCount();
+  }
+  /// Which robot moves on it and where the others are held.
+  virtual void sketchFrame(RecordSubspace& out) const { (void)out; }
 };
 
 /// A manifold in a frame (which robots move and which are held, or which carries which) that
@@ -42,6 +53,7 @@ class FramedManifold : public Manifold {
   enum : unsigned { kX = 1, kY = 2, kTheta = 4 };
   explicit FramedManifold(const Frame& frame) : frame_(&frame) {}
   const Frame& frame() const { return *frame_; }
+  void sketchFrame(RecordSubspace& out) const override { frame_->describe(out); }
   virtual unsigned fixes() const = 0;
   virtual Pose fixedAt() const = 0;
 

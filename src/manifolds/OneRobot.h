@@ -23,6 +23,10 @@ struct HeldFrame {
   std::vector<std::pair<size_t, Pose>> held;
   const Pose* heldPose(size_t robot) const;
   size_t mover() const { return moving; }
+  void describe(RecordSubspace& out) const {
+    out.moving = moving;
+    out.held = held;
+  }
   /// q with the moving robot at p.
   Config moved(const Config& q, const Pose& p) const;
   /// A lone robot turning in place: one straight step is the exact motion.

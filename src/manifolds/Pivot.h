@@ -41,6 +41,11 @@ class PivotLineManifold final : public Manifold {
   std::optional<std::vector<Config>> motion(size_t cell, const Config& from,
                                             const Config& to) const override;
   const Line& line() const { return line_; }
+  /// Its point is where the pivot stands.
+  void sketch(RecordManifold& out, bool geometry) const override {
+    Manifold::sketch(out, geometry);
+    sketchArcs(line_, out, geometry);
+  }
   /// The robot's configuration turned to `theta` about the pivot.
   Config at(double theta) const;
 

@@ -48,6 +48,14 @@ class SliceOf final : public StoredView<FramedManifold<Frame>, Slice> {
   }
   unsigned fixes() const override { return this->kTheta; }
   Pose fixedAt() const override { return {0, 0, slice().theta()}; }
+  void sketch(RecordManifold& out, bool geometry) const override {
+    Manifold::sketch(out, geometry);
+    out.theta = slice().theta();
+    for (size_t c = 0; c < cellCount(); ++c) {
+      for (const Ring& r : slice().cell(c)) out.vertices += r.size();
+      if (geometry) out.regions.push_back(slice().cell(c));
+    }
+  }
 };
 
 template <class Frame>
@@ -77,6 +85,10 @@ class LineOf final : public StoredView<FramedManifold<Frame>, Line> {
   }
   unsigned fixes() const override { return this->kX | this->kY; }
   Pose fixedAt() const override { return {line().point().x, line().point().y, 0}; }
+  void sketch(RecordManifold& out, bool geometry) const override {
+    Manifold::sketch(out, geometry);
+    sketchArcs(line(), out, geometry);
+  }
 };
 
 }  // namespace mms

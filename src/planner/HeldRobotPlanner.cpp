@@ -301,6 +301,8 @@ PlanStatus HeldRobotPlanner::run(const Termination& stop, const std::function<vo
                                  std::vector<Config>& waypoints, PathCheckResult& certificate) {
   clock_ = Stopwatch();
   const StopScope scope(stop);
+  roadmap_.startClock();
+  roadmap_.trackReached(settings_.record);
   try {
     return runRoundsFrom(stop, report, waypoints, certificate);
   } catch (const Stopped&) {

@@ -42,6 +42,8 @@ struct HeldRobotSettings {
   size_t maxRounds = 0;
   // Threads that build overlays (a subspace's slices); the result does not depend on it.
   unsigned threads = 1;
+  // Tracks when manifolds join the start's and the goal's component (OneRobotSettings::record).
+  bool record = false;
 };
 
 struct HeldRobotStats {
@@ -69,6 +71,7 @@ class HeldRobotPlanner {
   HeldRobotPlanner(const HeldRobotPlanner&) = delete;
   HeldRobotPlanner& operator=(const HeldRobotPlanner&) = delete;
   virtual ~HeldRobotPlanner();
+  const Roadmap& roadmap() const { return roadmap_; }
 
  protected:
   /// `stats` is the variant's, constructed after this base: only used once solving.

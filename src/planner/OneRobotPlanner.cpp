@@ -4,11 +4,11 @@
 #include <limits>
 
 #include "geometry/PolygonOps.h"
+#include "geometry/SpinPlace.h"
 #include "manifolds/CellRoute.h"
 #include "manifolds/CellSampling.h"
 #include "manifolds/Pivot.h"
 #include "path/Motion.h"
-#include "geometry/SpinPlace.h"
 #include "planner/NoPath.h"
 #include "planner/Rounds.h"
 #include "util/Parallel.h"
@@ -221,6 +221,8 @@ OneRobotResult OneRobotPlanner::solve(const Pose& start, const Pose& goal, const
                                       const std::function<void(const OneRobotStats&)>& progress) {
   Stopwatch total;
   const StopScope scope(stop);
+  roadmap_.startClock();
+  roadmap_.trackReached(settings_.record);
   try {
     return solveRounds(start, goal, stop, progress);
   } catch (const Stopped&) {

@@ -35,12 +35,12 @@ struct RoundsOutcome {
 /// `Stats` holds the counters every MMS planner reports: rounds, rejectedPaths and the
 /// seconds of search, motion and certify.
 template <class Stats>
-RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from, size_t to,
+RoundsOutcome runRounds(const RoundHooks& h, Roadmap& roadmap, size_t from, size_t to,
                         const Termination& stop, Stats& stats) {
   RoundsOutcome out;
   // After a candidate the checker refused, the round is completed before the next search.
   bool searchEarly = true;
-  ++stats.rounds;
+  roadmap.beginRound(uint32_t(++stats.rounds));
   while (true) {
     try {
       h.begin();
@@ -53,12 +53,14 @@ RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from
     Stopwatch search;
     const auto nodes = roadmap.path(from, to, [&] { return stop(); });
     stats.searchSeconds += search.seconds();
+    roadmap.noteSearch(from, to);
     if (nodes) {
       out.motion = h.motion(*nodes);
       stats.motionSeconds += out.motion.buildSeconds;
       stats.certifySeconds += out.motion.certifySeconds;
       if (out.motion.ok) {
         out.nodes = *nodes;
+        roadmap.notePath(out.nodes);
         out.end = RoundsOutcome::End::Found;
         return out;
       }
@@ -78,7 +80,7 @@ RoundsOutcome runRounds(const RoundHooks& h, const Roadmap& roadmap, size_t from
     }
     if (!h.next()) return out;
     searchEarly = true;
-    ++stats.rounds;
+    roadmap.beginRound(uint32_t(++stats.rounds));
   }
 }
 

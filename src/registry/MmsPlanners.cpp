@@ -5,6 +5,7 @@
 #include <memory>
 #include <type_traits>
 
+#include "graph/RoadmapRecord.h"
 #include "mms/Errors.h"
 #include "planner/KRobotPlanner.h"
 #include "planner/OneRobotPlanner.h"
@@ -146,6 +147,27 @@ PlanResult planResultOf(const Result& r, const std::map<std::string, double>& pa
   return out;
 }
 
+// A record of an MMS run (PlannerParams::record): its roadmap, stamped as it was built.
+std::shared_ptr<const PlanRecord> recordOf(const Roadmap* roadmap, size_t robots, double seconds) {
+  const Stopwatch recording;
+  auto record = std::make_shared<PlanRecord>();
+  record->planner = "mms";
+  record->robots = robots;
+  if (roadmap) appendRoadmap(*roadmap, RecordBudget{}, *record);
+  record->seconds = seconds;
+  record->recordSeconds = recording.seconds();
+  return record;
+}
+
+// The roadmap a planner records: the one-robot and held-robot planners have one.
+template <class P>
+const Roadmap* roadmapOf(const P& planner) {
+  if constexpr (std::is_base_of_v<HeldRobotPlanner, P>)
+    return &static_cast<const HeldRobotPlanner&>(planner).roadmap();
+  else
+    return nullptr;
+}
+
 // The seam's progress callback as an MMS planner's.
 template <class Stats>
 std::function<void(const Stats&)> progressOf(const Planner::Progress& progress) {
@@ -209,6 +231,7 @@ class OneRobotMms : public Planner {
         start_(scene.robots[0].start),
         goal_(scene.robots[0].goal),
         picture_(picture),
+        record_(settings.record),
         parameters_(std::move(parameters)) {}
 
   // The roadmap lives on from query to query; its statistics count its whole life. Each query
@@ -222,6 +245,7 @@ class OneRobotMms : public Planner {
     PlanResult out = planResultOf(r, parameters_);
     spent_ = out.stats;
     out.stats = since(out.stats, before);
+    if (record_) out.record = recordOf(&planner_.roadmap(), 1, out.stats.seconds);
     if (picture_ && out.found()) {
       for (const ConnectivityGraph::Node& n : r.cells)
         if (const auto* s =
@@ -250,7 +274,7 @@ class OneRobotMms : public Planner {
 
   OneRobotPlanner planner_;
   Pose start_, goal_;
-  bool picture_;
+  bool picture_, record_;
   std::map<std::string, double> parameters_;
   PlanStatistics spent_;  // by the queries before
 };
@@ -265,10 +289,11 @@ template <class P, class Settings, class Stats>
 class ManyRobotMms : public Planner {
  public:
   ManyRobotMms(const Scene& scene, const Settings& settings,
-               std::map<std::string, double> parameters)
+               std::map<std::string, double> parameters, bool record)
       : scene_(scene),
         settings_(settings),
         planner_(std::make_unique<P>(scene, settings)),
+        record_(record),
         parameters_(std::move(parameters)) {}
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
@@ -277,14 +302,17 @@ class ManyRobotMms : public Planner {
       planner_ = std::make_unique<P>(scene_, settings_);
     }
     solved_ = true;
-    return planResultOf(planner_->solve(stop, progressOf<Stats>(progress)), parameters_);
+    PlanResult out = planResultOf(planner_->solve(stop, progressOf<Stats>(progress)), parameters_);
+    if (record_)
+      out.record = recordOf(roadmapOf(*planner_), scene_.robots.size(), out.stats.seconds);
+    return out;
   }
 
  private:
   Scene scene_;
   Settings settings_;
   std::unique_ptr<P> planner_;
-  bool solved_ = false;
+  bool solved_ = false, record_;
   std::map<std::string, double> parameters_;
 };
 using TwoRobotMms = ManyRobotMms<TwoRobotPlanner, TwoRobotSettings, TwoRobotStats>;
@@ -298,6 +326,7 @@ Settings settingsFrom(const PlannerParams& params, const std::vector<ParamSpec>&
   Settings s;
   auto given = [&](Param p) { return params.values.count(specs[p].name) > 0; };
   s.seed = params.seed;
+  s.record = params.record;
   s.threads = threadsOf(paramValue(params, specs[kThreads]));
   if (given(kNTheta)) s.nTheta = size_t(paramValue(params, specs[kNTheta]));
   if (given(kNLines)) s.nLines = size_t(paramValue(params, specs[kNLines]));
@@ -316,7 +345,7 @@ std::unique_ptr<Planner> makeOrdered(const Scene& scene, const PlannerParams& pa
   OrderedSettings s;
   s.seed = params.seed;
   s.threads = threadsOf(paramValue(params, specs[kThreads]));
-  return std::make_unique<OrderedMms>(scene, s, std::map<std::string, double>{});
+  return std::make_unique<OrderedMms>(scene, s, std::map<std::string, double>{}, params.record);
 }
 
 // Recursive MMS: one robot, two, or k robots all but one held (the paper's planners).
@@ -338,13 +367,15 @@ std::unique_ptr<Planner> makeJoint(const Scene& scene, const PlannerParams& para
                                       {"n_lines", double(s.nLines)},
                                       {"n_fixings", double(s.nFixings)},
                                       {"expand_share", s.expandShare},
-                                      {"coupled", s.coupled ? 1.0 : 0.0}});
+                                      {"coupled", s.coupled ? 1.0 : 0.0}},
+        params.record);
   }
   if (scene.robots.empty()) throw InputError(source + ": robots: none; the mms planner needs one");
   const auto s = settingsFrom<KRobotSettings>(params, specs);
   return std::make_unique<KRobotMms>(
       scene, s,
-      std::map<std::string, double>{{"n_theta", double(s.nTheta)}, {"n_lines", double(s.nLines)}});
+      std::map<std::string, double>{{"n_theta", double(s.nTheta)}, {"n_lines", double(s.nLines)}},
+      params.record);
 }
 
 std::unique_ptr<Planner> makeMms(const Scene& scene, const PlannerParams& params,

@@ -42,6 +42,16 @@ class OmplAdapter : public Planner {
                         {"certify", r.seconds - r.setupSeconds - r.solveSeconds}};
     if (settings_.simplify) out.stats.phases.emplace_back("simplify", r.simplifySeconds);
     out.parameters = parameters_;
+    if (settings_.record) {
+      auto record = std::make_shared<PlanRecord>();
+      record->planner = settings_.planner;
+      record->robots = scene_.robots.size();
+      record->seconds = r.seconds;
+      record->recordSeconds = r.recordSeconds;
+      record->tree = r.tree;
+      record->growth = r.growth;
+      out.record = std::move(record);
+    }
     return out;
   }
 
@@ -155,6 +165,7 @@ std::vector<PlannerInfo> omplPlannerInfos() {
       s.planner = name;
       s.seed = params.seed;
       s.keepUntilExit = params.exitsAfterRun;
+      s.record = params.record;
       std::map<std::string, double> used;
       for (const ParamSpec& spec : specs) {
         const double v = paramValue(params, spec);

@@ -259,7 +259,7 @@ class Portfolio : public Planner {
   Portfolio(const Scene& scene, Challenger::Maker makeMms, const PlannerParams& params)
       : scene_(scene),
         makeMms_(std::move(makeMms)),
-        samplerParams_{params.seed, kSamplerParams, false, params.exitsAfterRun},
+        samplerParams_{params.seed, kSamplerParams, false, params.exitsAfterRun, params.record},
         mmsAlone_(makeMms_ && params.roadmapPicture && scene.robots.size() == 1) {}
   ~Portfolio() override { finishBackgroundWork(); }
 

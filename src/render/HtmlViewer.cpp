@@ -2,6 +2,7 @@
 
 #include "io/SceneIO.h"
 #include "render/Palette.h"
+#include "render/RecordLayer.h"
 #include "util/Markup.h"
 
 namespace mms {
@@ -18,7 +19,11 @@ const cv = document.getElementById('view');
 cv.width = W; cv.height = H;
 // The picture fills the window, as large as fits beside the controls, and follows it when it
 // is resized (the drawing is scaled, not redrawn).
+// #fit=0 keeps the drawing at its own size (pixel checks, screenshots of a given scale).
 function fit() {
+  if (new URLSearchParams(location.hash.slice(1)).get('fit') === '0') {
+    cv.style.width = W + 'px'; cv.style.height = H + 'px'; return;
+  }
   const below = document.body.scrollHeight - cv.offsetHeight;
   const k = Math.max(0.1, Math.min(window.innerWidth / W, (window.innerHeight - below) / H));
   cv.style.width = Math.floor(W * k) + 'px'; cv.style.height = Math.floor(H * k) + 'px';
@@ -111,6 +116,7 @@ function drawStill() {
     s.fillStyle = 'rgba(0, 0, 0, 0.35)';
     (D.roadmap.points || []).forEach(p => { const q = px(p); s.fillRect(q[0] - 1, q[1] - 1, 2, 2); });
   }
+  if (typeof drawRecord === 'function') drawRecord(s);
   s.fillStyle = '#3f6fb5';
   D.obstacles.forEach(o => { o.radius !== undefined ? disc(s, o.center, o.radius) : ring(s, o); s.fill(); });
   for (let k = 0; k < N; ++k) {
@@ -237,7 +243,7 @@ Vec2 viewerPixel(const Scene& scene, Vec2 p) {
   return {kViewerPad + (p.x - b.xmin) * s, kViewerPad + (b.ymax - p.y) * s};
 }
 
-std::string renderHtmlViewer(const Scene& scene, const Path* path) {
+std::string renderHtmlViewer(const Scene& scene, const Path* path, const RecordFile* record) {
   // The scene as its file holds it (bounds, obstacles, robots' shape, start and goal).
   nlohmann::json d = sceneToJson(scene);
   d["canvasWidth"] = kViewerCanvasWidth;
@@ -250,6 +256,10 @@ std::string renderHtmlViewer(const Scene& scene, const Path* path) {
   }
   // Inside <script>, "</" would end the element: JSON allows escaping the slash.
   std::string data = d.dump();
+  if (record) {  // spliced in as text: a record's JSON tree would take ten times its size
+    data.pop_back();
+    data += ",\"record\":" + recordText(record->record, record->stats) + "}";
+  }
   for (size_t at = 0; (at = data.find("</", at)) != std::string::npos; at += 3)
     data.replace(at, 2, "<\\/");
   const std::string title = scene.name.empty() ? "mms scene" : scene.name;
@@ -272,9 +282,12 @@ std::string renderHtmlViewer(const Scene& scene, const Path* path) {
   html += escapeMarkup(title) +
           ": obstacles blue, robots green at the start and red at the goal (outlines). "
           "Link to a moment with #t=0.5, to a robot with #robot=NAME.</p>\n";
+  if (record) html += recordControls(*record);
   if (scene.robots.size() >= 2) html += legend(scene);
   html += "<script id=\"mms-data\" type=\"application/json\">" + data + "</script>\n";
-  html += "<script>" + std::string(kScript) + "</script>\n</body>\n</html>\n";
+  html += "<script>" + std::string(kScript) + "</script>\n";
+  if (record) html += "<script>" + std::string(recordScript()) + "</script>\n";
+  html += "</body>\n</html>\n";
   return html;
 }
 

@@ -79,7 +79,7 @@ TEST(Rounds, SearchEarlyCompleteTheRoundAfterARefusalThenDouble) {
 }
 
 TEST(Rounds, GiveUpAndStop) {
-  const Roadmap g = roadmapOfCells(2);
+  Roadmap g = roadmapOfCells(2);
   size_t built = 0, target = 1, rounds = 0;
   RoundHooks h;
   h.growing = [&] { return built < target; };

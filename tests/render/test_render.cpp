@@ -112,13 +112,18 @@ TEST(Render, EachRobotHasItsColourAndItsNameInALegend) {
   EXPECT_EQ(renderHtmlViewer(one, nullptr).find("id=\"legend\""), std::string::npos);
 }
 
-// The viewer's picture follows the window: sized on load and on every resize, not fixed.
+// The viewer's picture follows the window: sized on load and on every resize; fixed only when
+// the link asks for it (#fit=0, for screenshots at a known scale).
 TEST(Render, ViewerCanvasFollowsTheWindow) {
   const Scene s = loadScene(scenario("one-robot/bar-slot.json"));
   const std::string html = renderHtmlViewer(s, nullptr);
   EXPECT_NE(html.find("window.addEventListener('resize', fit)"), std::string::npos);
   EXPECT_NE(html.find("window.innerWidth / W"), std::string::npos);
-  EXPECT_EQ(html.find("cv.style.width = W + 'px'"), std::string::npos);  // the fixed size before
+  const size_t fixed = html.find("cv.style.width = W + 'px'");
+  ASSERT_NE(fixed, std::string::npos);
+  const size_t asked = html.rfind("get('fit') === '0'", fixed);
+  ASSERT_NE(asked, std::string::npos);
+  EXPECT_LT(fixed - asked, 80u) << "the fixed size only in the branch #fit=0 takes";
 }
 
 // Robots moving one at a time: each robot's animation keeps only the waypoints where it starts,

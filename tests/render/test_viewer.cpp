@@ -6,14 +6,17 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "Support.h"
 #include "geometry/PolygonOps.h"
 #include "io/PathIO.h"
+#include "io/RecordIO.h"
 #include "io/SceneIO.h"
 #include "render/HtmlViewer.h"
 #include "render/Palette.h"
 #include "scenarios/Generators.h"
+#include "util/Random.h"
 
 namespace mms {
 namespace {
@@ -203,6 +206,122 @@ TEST(View, TheFrameMeterPutsATimeOnThePage) {
   const double ms = std::stod(c.out.substr(at + 15));
   EXPECT_GT(ms, 0);
   EXPECT_NE(c.out.find("a frame in "), std::string::npos);
+}
+
+// A planning record's page (mms plan --record, mms view --record) in `dir`, with the record.
+std::string recordPage(const Scene& s, const std::string& planner, TempDir& dir,
+                       RecordFile& record) {
+  const std::string sceneFile = dir.path("s.json"), pathFile = dir.path("p.json"),
+                    recordFile = dir.path("r.json"), html = dir.path("v.html");
+  saveScene(s, sceneFile);
+  auto plan = runMms("plan " + quote(sceneFile) + " --planner " + planner + " -q -o " +
+                     quote(pathFile) + " --record " + quote(recordFile));
+  EXPECT_EQ(plan.code, 0) << plan.err;
+  auto v = runMms("view " + quote(sceneFile) + " " + quote(pathFile) + " --record " +
+                  quote(recordFile) + " -o " + quote(html));
+  EXPECT_EQ(v.code, 0) << v.err;
+  record = loadRecord(recordFile, s.robots.size());
+  return html;
+}
+
+bool white(Rgb c) { return c.r > 245 && c.g > 245 && c.b > 245; }
+
+// Any pixel within one of `at` not white.
+bool drawnNear(const std::vector<Rgb>& px, int w, int h, Vec2 at) {
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int x = int(std::lround(at.x)) + dx, y = int(std::lround(at.y)) + dy;
+      if (x >= 0 && y >= 0 && x < w && y < h && !white(px[size_t(y) * size_t(w) + size_t(x)]))
+        return true;
+    }
+  return false;
+}
+
+// A point well inside a cell of a slice, away from where the robot stands at the start
+// and the goal; the slice's stamp in `at`.
+std::optional<Vec2> pointInASlice(const Scene& s, const PlanRecord& r, double& at) {
+  const double scale = (kViewerCanvasWidth - 2 * kViewerPad) / s.bounds.width();
+  const double reach = radius(s.robots[0].shape) + 4 / scale;
+  Random rng(3);
+  for (const RecordManifold& m : r.manifolds) {
+    if (m.family != "slice") continue;
+    for (int i = 0; i < 2000; ++i) {
+      const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax),
+                   rng.uniform(s.bounds.ymin, s.bounds.ymax)};
+      bool in = false;
+      double margin = 1e300;
+      for (const auto& cell : m.regions) {
+        bool inCell = false;
+        for (const Ring& ring : cell) {
+          inCell ^= insideRing(ring, p);
+          margin = std::min(margin, distanceToEdges(ring, p));
+        }
+        in = in || inCell;
+      }
+      const Pose a = s.robots[0].start, b = s.robots[0].goal;
+      if (in && margin > 4 / scale && std::hypot(p.x - a.x, p.y - a.y) > reach &&
+          std::hypot(p.x - b.x, p.y - b.y) > reach) {
+        at = m.at;
+        return p;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+// The record's slider: a slice's cell is drawn from the moment the slice was built, not before.
+TEST(View, ARecordShowsEachSliceFromTheMomentItWasBuilt) {
+  const auto chromium = test::runCommand("command -v chromium");
+  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  TempDir dir;
+  const Scene s = keyholeScene(2);
+  RecordFile record;
+  const std::string html = recordPage(s, "mms", dir, record);
+  double at = 0;
+  const auto p = pointInASlice(s, record.record, at);
+  ASSERT_TRUE(p) << "no slice cell away from the robot";
+  double length = record.record.seconds;
+  for (const RecordManifold& m : record.record.manifolds) length = std::max(length, double(m.at));
+  const Vec2 q = viewerPixel(s, *p);
+  for (const auto& [rt, shown] : {std::pair{0.0, false}, {0.5 * at / length, false}, {1.0, true}}) {
+    int w = 0, h = 0;
+    const auto px = screenshot(
+        dir, html, "fit=0&t=0&traces=0&layers=cells&rt=" + std::to_string(rt), "820,900", w, h);
+    ASSERT_FALSE(px.empty());
+    ASSERT_LT(q.y, h);
+    const Rgb c = px[size_t(std::lround(q.y)) * size_t(w) + size_t(std::lround(q.x))];
+    EXPECT_EQ(!white(c), shown) << "planning at " << rt << " of the run, pixel " << c.r << ","
+                                << c.g << "," << c.b;
+  }
+}
+
+// A sampler's record: its tree's edges appear as the slider passes the time they were found.
+TEST(View, ARecordShowsASamplersTreeAsItGrew) {
+  const auto chromium = test::runCommand("command -v chromium");
+  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  TempDir dir;
+  const Scene s = keyholeScene(1, 0.3);
+  RecordFile record;
+  const std::string html = recordPage(s, "rrtconnect", dir, record);
+  const RecordTree& t = record.record.tree;
+  ASSERT_GT(t.edges.size(), 5u);
+  int w = 0, h = 0, w1 = 0, h1 = 0;
+  const auto before = screenshot(dir, html, "fit=0&t=0&traces=0&layers=tree&rt=0", "820,900", w, h);
+  const auto after =
+      screenshot(dir, html, "fit=0&t=0&traces=0&layers=tree&rt=1", "820,900", w1, h1);
+  ASSERT_FALSE(before.empty() || after.empty());
+  size_t checked = 0;
+  for (const auto& e : t.edges) {
+    const Config &a = t.states[e[0]], &b = t.states[e[1]];
+    const Vec2 pa = viewerPixel(s, {a[0], a[1]}), pb = viewerPixel(s, {b[0], b[1]});
+    if (std::hypot(pa.x - pb.x, pa.y - pb.y) < 6) continue;  // too short to tell from its ends
+    const Vec2 mid = viewerPixel(s, {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2});
+    if (mid.y >= h || drawnNear(before, w, h, mid)) continue;  // an obstacle or a robot there
+    ++checked;
+    EXPECT_TRUE(drawnNear(after, w, h, mid)) << "edge " << e[0] << "-" << e[1];
+    if (checked == 20) break;
+  }
+  EXPECT_GT(checked, 3u);
 }
 
 }  // namespace

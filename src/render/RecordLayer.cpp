@@ -1,0 +1,214 @@
+#include "render/RecordLayer.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "util/Markup.h"
+
+namespace mms {
+
+namespace {
+
+// The record layer, run after the player's script (HtmlViewer.cpp), whose drawStill() calls
+// drawRecord(context) under the obstacles. D.record is the mms-record/1 document.
+const char* kRecordScript = R"JS(
+const R = D.record;
+const rui = {
+  time: document.getElementById('rtime'), label: document.getElementById('rlabel'),
+  cells: document.getElementById('lcells'), lines: document.getElementById('llines'),
+  tree: document.getElementById('ltree'), path: document.getElementById('lpath'),
+  sub: document.getElementById('rsub'), angle: document.getElementById('rangle'),
+  robot: document.getElementById('rrobot'), growth: document.getElementById('rgrowth')
+};
+const isSlice = m => m.family.indexOf('slice') >= 0;
+const tree = R.tree || { states: [], at: [], edges: [] };
+// The planning's length: the run's seconds, or the last stamp if a stamp lies past them.
+const G = R.growth, GN = G.at.length;
+let RT = Math.max(R.seconds, GN ? G.at[GN - 1] : 0, 1e-9);
+const angles = [];
+R.manifolds.forEach(m => { if (isSlice(m) && angles.indexOf(m.theta) < 0) angles.push(m.theta); });
+angles.sort((a, b) => a - b);
+angles.forEach((a, i) => { const o = document.createElement('option'); o.value = i; o.textContent = a.toFixed(4) + ' rad'; rui.angle.appendChild(o); });
+R.subspaces.forEach((s, i) => {
+  const o = document.createElement('option'); o.value = i;
+  const held = s.held.map(h => D.robots[h[0]].name + ' at (' + h[1].toFixed(2) + ', ' + h[2].toFixed(2) + ')').join(', ');
+  o.textContent = D.robots[s.moving].name + (s.attached !== undefined ? ' carrying ' + D.robots[s.attached].name : ' moves') + (held ? '; held: ' + held : '');
+  rui.sub.appendChild(o);
+});
+if (R.subspaces.length < 2) rui.sub.parentElement.style.display = 'none';
+if (!angles.length) rui.angle.parentElement.style.display = 'none';
+D.robots.forEach((r, i) => { const o = document.createElement('option'); o.value = i; o.textContent = r.name; rui.robot.appendChild(o); });
+if (!tree.states.length || D.robots.length < 2) rui.robot.parentElement.style.display = 'none';
+function planningTime() { return RT * rui.time.value / 1000; }
+// Start's component green, goal's red, both (merged) purple, neither grey.
+function componentColour(m, t, alpha) {
+  const s = m.reached[0] >= 0 && m.reached[0] <= t, g = m.reached[1] >= 0 && m.reached[1] <= t;
+  const c = s && g ? '106, 27, 154' : s ? '46, 125, 50' : g ? '198, 40, 40' : '110, 110, 110';
+  return 'rgba(' + c + ', ' + alpha + ')';
+}
+function shown(m, t) {
+  if (m.at > t) return false;
+  if (rui.sub.value !== 'all' && m.subspace !== Number(rui.sub.value)) return false;
+  if (isSlice(m) && rui.angle.value !== 'all' && m.theta !== angles[Number(rui.angle.value)]) return false;
+  return true;
+}
+function flatPath(ctx, flat) {
+  for (let i = 0; i < flat.length; i += 2) {
+    const q = px([flat[i], flat[i + 1]]);
+    i ? ctx.lineTo(q[0], q[1]) : ctx.moveTo(q[0], q[1]);
+  }
+  ctx.closePath();
+}
+function drawCells(s, t) {
+  const slices = R.manifolds.filter(m => isSlice(m) && shown(m, t));
+  const alpha = Math.max(0.04, Math.min(0.35, 3 / Math.max(1, slices.length)));
+  slices.forEach(m => {
+    s.fillStyle = componentColour(m, t, alpha);
+    m.regions.forEach(cell => { s.beginPath(); cell.forEach(r => flatPath(s, r)); s.fill('evenodd'); });
+    if (rui.path.checked && m.path) {
+      s.strokeStyle = 'rgba(0, 0, 0, 0.8)'; s.lineWidth = 1.5;
+      m.regions.forEach(cell => { s.beginPath(); cell.forEach(r => flatPath(s, r)); s.stroke(); });
+    }
+  });
+}
+function drawLines(s, t) {
+  R.manifolds.forEach(m => {
+    if (isSlice(m) || !shown(m, t)) return;
+    const q = px(m.point), big = rui.path.checked && m.path;
+    s.fillStyle = big ? '#000000' : componentColour(m, t, 0.8);
+    const r = big ? 3 : 1.5;
+    if (m.family === 'pivot-line') { s.beginPath(); s.arc(q[0], q[1], r + 2, 0, 2 * Math.PI); s.strokeStyle = s.fillStyle; s.lineWidth = 1; s.stroke(); }
+    else s.fillRect(q[0] - r, q[1] - r, 2 * r, 2 * r);
+  });
+}
+function drawTree(s, t) {
+  const k = tree.states.length && D.robots.length > 1 ? Number(rui.robot.value) : 0, o = 3 * k;
+  s.strokeStyle = 'rgba(123, 31, 162, 0.6)'; s.lineWidth = 1.5;
+  s.beginPath();
+  tree.edges.forEach(e => {
+    if (tree.at[e[0]] > t || tree.at[e[1]] > t) return;
+    const a = px([tree.states[e[0]][o], tree.states[e[0]][o + 1]]), b = px([tree.states[e[1]][o], tree.states[e[1]][o + 1]]);
+    s.moveTo(a[0], a[1]); s.lineTo(b[0], b[1]);
+  });
+  s.stroke();
+}
+function drawHeld(s) {
+  if (rui.sub.value === 'all') return;
+  const sub = R.subspaces[Number(rui.sub.value)];
+  s.strokeStyle = '#555555'; s.lineWidth = 1.5; s.setLineDash([3, 2]);
+  sub.held.forEach(h => { robotPath(s, h[0], [h[1], h[2], h[3]]); s.stroke(); });
+  s.setLineDash([]);
+}
+function drawRecord(s) {
+  const t = planningTime();
+  if (rui.cells.checked) drawCells(s, t);
+  if (rui.lines.checked) drawLines(s, t);
+  if (rui.tree.checked) drawTree(s, t);
+  drawHeld(s);
+  describe(t);
+}
+// How many of each kind existed at t, by the growth samples (kept from every stamp).
+function builtBy(t) {
+  let i = -1;
+  while (i + 1 < GN && G.at[i + 1] <= t) ++i;
+  const n = {};
+  Object.keys(G.counts).forEach(k => { n[k] = i < 0 ? 0 : G.counts[k][i]; });
+  return n;
+}
+// What existed at t, in words, and the growth chart's marker.
+function describe(t) {
+  const n = builtBy(t);
+  let slices = 0, lines = 0, round = 0, drawn = 0, connected = false;
+  Object.keys(n).forEach(k => { if (k !== 'states') (k.indexOf('slice') >= 0 ? slices += n[k] : lines += n[k]); });
+  R.manifolds.forEach(m => { if (m.at <= t) { round = Math.max(round, m.round); ++drawn; } });
+  tree.at.forEach(a => { if (a <= t) ++drawn; });
+  R.searches.forEach(x => { if (x.at <= t) { round = Math.max(round, x.round); if (x.connected) connected = true; } });
+  let text = 'planning t = ' + t.toFixed(3) + ' s of ' + RT.toFixed(3) + ' s (' + R.planner + ')';
+  if (slices + lines) text += ' · ' + slices + ' slices, ' + lines + ' lines · round ' + round + (connected ? ' · start and goal connected' : '');
+  if (n.states !== undefined) text += ' · ' + n.states + ' states';
+  const kept = R.manifolds.length + tree.states.length, all = (tree.total_states || 0) + (GN ? Object.keys(G.counts).filter(k => k !== 'states').reduce((a, k) => a + G.counts[k][GN - 1], 0) : 0);
+  if (kept < all) text += ' (' + drawn + ' of them drawn: the record keeps every k-th)';
+  rui.label.textContent = text;
+  drawGrowth(t);
+}
+// Manifolds (or a tree's states) against time, and where the slider is.
+function drawGrowth(t) {
+  const c = rui.growth.getContext('2d'), w = rui.growth.width, h = rui.growth.height;
+  c.fillStyle = '#ffffff'; c.fillRect(0, 0, w, h);
+  const kinds = Object.keys(G.counts), total = i => kinds.reduce((a, k) => a + G.counts[k][i], 0);
+  const most = Math.max(1, GN ? total(GN - 1) : 0);
+  c.strokeStyle = '#3f6fb5'; c.lineWidth = 1.5; c.beginPath();
+  for (let i = 0; i < GN; ++i) { const x = G.at[i] / RT * (w - 2) + 1, y = h - 1 - total(i) / most * (h - 2); i ? c.lineTo(x, y) : c.moveTo(x, y); }
+  c.stroke();
+  c.strokeStyle = '#c62828'; c.beginPath(); c.moveTo(t / RT * (w - 2) + 1, 0); c.lineTo(t / RT * (w - 2) + 1, h); c.stroke();
+}
+function recordFromHash() {
+  const h = new URLSearchParams(location.hash.slice(1));
+  if (h.has('rt')) rui.time.value = Math.round(1000 * Math.min(1, Math.max(0, Number(h.get('rt')))));
+  if (h.has('layers')) {
+    const on = h.get('layers').split(',');
+    ['cells', 'lines', 'tree', 'path'].forEach(l => { rui[l].checked = on.indexOf(l) >= 0; });
+  }
+  if (h.has('sub')) rui.sub.value = h.get('sub');
+  if (h.has('angle')) rui.angle.value = h.get('angle');
+  if (h.has('rrobot')) rui.robot.value = h.get('rrobot');
+  drawStill(); draw();
+}
+[rui.time, rui.cells, rui.lines, rui.tree, rui.path, rui.sub, rui.angle, rui.robot].forEach(e => {
+  e.addEventListener('input', () => { drawStill(); draw(); });
+  e.addEventListener('change', () => { drawStill(); draw(); });
+});
+window.addEventListener('hashchange', recordFromHash);
+recordFromHash();
+)JS";
+
+}  // namespace
+
+std::string recordControls(const RecordFile& record) {
+  const bool tree = !record.record.tree.states.empty();
+  const bool manifolds = !record.record.manifolds.empty();
+  std::string html =
+      "<div id=\"record\" style=\"padding:4px 10px;display:flex;gap:12px;align-items:center;"
+      "flex-wrap:wrap\"><b>planning</b><input id=\"rtime\" type=\"range\" min=\"0\" "
+      "max=\"1000\" value=\"1000\" style=\"width:340px\" aria-label=\"planning time\">";
+  auto box = [](const char* id, const char* label, bool on) {
+    return std::string("<label><input id=\"") + id + "\" type=\"checkbox\"" +
+           (on ? " checked" : "") + "> " + label + "</label>";
+  };
+  html += box("lcells", "slice cells", manifolds) + box("llines", "lines", manifolds) +
+          box("ltree", "tree or graph", tree) + box("lpath", "the path's manifolds", manifolds);
+  html +=
+      "<label>subspace <select id=\"rsub\"><option value=\"all\">all</option></select></label>"
+      "<label>slices at <select id=\"rangle\"><option value=\"all\">every angle</option>"
+      "</select></label><label>tree of <select id=\"rrobot\"></select></label>"
+      "<canvas id=\"rgrowth\" width=\"240\" height=\"40\" title=\"built against time\"></canvas>"
+      "</div>\n<p id=\"rlabel\" style=\"padding:0 10px\"></p>\n";
+  html += "<div id=\"rphases\" style=\"padding:0 10px\">" + phaseChart(record.stats) + "</div>\n";
+  return html;
+}
+
+std::string phaseChart(const PlanStatistics& stats) {
+  // Longest first: where the time went reads from the top.
+  auto phases = stats.phases;
+  std::stable_sort(phases.begin(), phases.end(),
+                   [](const auto& a, const auto& b) { return a.second > b.second; });
+  double total = 0;
+  for (const auto& [name, s] : phases) total += s;
+  std::string html = "<table style=\"border-collapse:collapse\">";
+  for (const auto& [name, s] : phases) {
+    const int width = total > 0 ? int(240 * s / total + 0.5) : 0;
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.3g s", s);
+    html += "<tr><td style=\"padding-right:8px\">" + escapeMarkup(name) +
+            "</td><td><span style=\"display:inline-block;height:10px;background:#3f6fb5;width:" +
+            std::to_string(width) + "px\"></span> " + seconds + "</td></tr>";
+  }
+  html += "</table><p>";
+  for (const auto& [name, n] : stats.counts)
+    html += escapeMarkup(name) + " " + std::to_string(n) + " · ";
+  return html + "</p>";
+}
+
+const char* recordScript() { return kRecordScript; }
+
+}  // namespace mms
