@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "GeometryReference.h"
 #include "Support.h"
@@ -275,4 +276,27 @@ TEST(Record, TheFileReadsBackAndBadOnesAreNamed) {
     }
   EXPECT_NE(refusal(bad).find(".regions[0][0][1]: expected a number"), std::string::npos)
       << refusal(bad);
+}
+
+// On the command line: a record goes with its scene; a bad one is named in one line, exit 2,
+// and no page is written.
+TEST(Record, TheCommandLineNamesABadRecordAndWritesNoPage) {
+  TempDir dir;
+  const std::string one = scenario("one-robot/bar-slot.json"),
+                    two = scenario("two-robots/pacman-0.5.json"), rec = dir.path("r.json"),
+                    page = dir.path("v.html");
+  auto plan = runMms("plan " + quote(one) + " --planner mms -q --record " + quote(rec));
+  ASSERT_EQ(plan.code, 0) << plan.err;
+  EXPECT_EQ(runMms("view " + quote(one) + " --record " + quote(rec) + " -o " + quote(page)).code,
+            0);
+  std::filesystem::remove(page);
+  auto other = runMms("view " + quote(two) + " --record " + quote(rec) + " -o " + quote(page));
+  EXPECT_EQ(other.code, 2);
+  EXPECT_EQ(other.err, rec + ": robots: the record is of 1 robots, the scene has 2\n");
+  EXPECT_FALSE(std::filesystem::exists(page));
+  const std::string badFile = dir.file("bad.json", "{\"format\": \"mms-record/1\"}");
+  auto bad = runMms("view " + quote(one) + " --record " + quote(badFile) + " -o " + quote(page));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(bad.err, badFile + ": planner: missing\n");
+  EXPECT_FALSE(std::filesystem::exists(page));
 }
