@@ -14,6 +14,7 @@ packages=(
   libpugixml-dev libpng-dev
   libjemalloc-dev
   chromium
+  libjs-three
   ompl-demos
   pybind11-dev python3-dev python3-pytest
 )

@@ -286,7 +286,8 @@ std::string renderHtmlViewer(const Scene& scene, const Path* path, const RecordF
   if (scene.robots.size() >= 2) html += legend(scene);
   html += "<script id=\"mms-data\" type=\"application/json\">" + data + "</script>\n";
   html += "<script>" + std::string(kScript) + "</script>\n";
-  if (record) html += "<script>" + std::string(recordScript()) + "</script>\n";
+  if (record)
+    html += "<script>" + std::string(recordScript()) + "</script>\n" + cspaceScripts(*record);
   html += "</body>\n</html>\n";
   return html;
 }

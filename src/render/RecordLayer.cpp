@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 
 #include "util/Markup.h"
 
@@ -106,6 +108,7 @@ function drawRecord(s) {
   if (rui.tree.checked) drawTree(s, t);
   drawHeld(s);
   describe(t);
+  if (window.buildCspace) buildCspace(t);
 }
 // How many of each kind existed at t, by the growth samples (kept from every stamp).
 function builtBy(t) {
@@ -162,6 +165,112 @@ window.addEventListener('hashchange', recordFromHash);
 recordFromHash();
 )JS";
 
+// One robot's C-space in 3-D (three.js, inlined from Debian's libjs-three): slices' cells as
+// flat shapes at their angle, lines' free arcs as vertical segments, the path as a curve; x and
+// y across, theta up (-pi at the bottom, pi at the top). Rebuilt with the planning slider.
+const char* kCspaceScript = R"JS(
+(function () {
+  const box = document.getElementById('cspace'), on = document.getElementById('lcspace');
+  const note = document.getElementById('cspace-note');
+  const PI = Math.PI, k = 2 / Math.max(B[2] - B[0], B[3] - B[1]);
+  const cx = (B[0] + B[2]) / 2, cy = (B[1] + B[3]) / 2;
+  const wrap = a => { const w = ((a + PI) % (2 * PI) + 2 * PI) % (2 * PI); return w - PI; };
+  const V = (x, y, th) => new THREE.Vector3((x - cx) * k, (y - cy) * k, th / PI);
+  let renderer = null, scene3, camera, group = null;
+  const h = new URLSearchParams(location.hash.slice(1));
+  function init() {
+    try {
+      renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    } catch (e) { note.textContent = '3-D view: no WebGL in this browser'; return false; }
+    renderer.setSize(W, 500); renderer.setClearColor(0xffffff);
+    box.appendChild(renderer.domElement);
+    scene3 = new THREE.Scene();
+    camera = new THREE.PerspectiveCamera(40, W / 500, 0.01, 100);
+    camera.up.set(0, 0, 1); camera.position.set(1.6, -2.9, 1.6); camera.lookAt(0, 0, 0);
+    const controls = new THREE.OrbitControls(camera, renderer.domElement);
+    controls.addEventListener('change', () => renderer.render(scene3, camera));
+    // The frame: the bounds at -pi and pi, and the obstacles at the bottom.
+    const frame = [];
+    [-1, 1].forEach(z => { [[0, 1], [1, 2], [2, 3], [3, 0]].forEach(e => {
+      const c = [[B[0], B[1]], [B[2], B[1]], [B[2], B[3]], [B[0], B[3]]];
+      frame.push(V(c[e[0]][0], c[e[0]][1], z * PI), V(c[e[1]][0], c[e[1]][1], z * PI)); }); });
+    [[B[0], B[1]], [B[2], B[1]], [B[2], B[3]], [B[0], B[3]]].forEach(c => frame.push(V(c[0], c[1], -PI), V(c[0], c[1], PI)));
+    scene3.add(new THREE.LineSegments(new THREE.BufferGeometry().setFromPoints(frame), new THREE.LineBasicMaterial({ color: 0x999999 })));
+    const grey = new THREE.MeshBasicMaterial({ color: 0x3f6fb5, side: THREE.DoubleSide });
+    D.obstacles.forEach(o => { if (o.radius !== undefined) return;
+      const m = new THREE.Mesh(new THREE.ShapeGeometry(new THREE.Shape(o.map(p => new THREE.Vector2((p[0] - cx) * k, (p[1] - cy) * k)))), grey);
+      m.position.z = -1; scene3.add(m); });
+    return true;
+  }
+  function shape(ring) { return ring.reduce((a, v, i) => { if (i % 2) a.push(new THREE.Vector2((ring[i - 1] - cx) * k, (v - cy) * k)); return a; }, []); }
+  function build(t) {
+    if (!on.checked) { box.style.display = 'none'; return; }
+    box.style.display = 'block';
+    if (!renderer && !init()) return;
+    if (group) { scene3.remove(group); group.traverse(o => { if (o.geometry) o.geometry.dispose(); if (o.material) o.material.dispose(); }); }
+    group = new THREE.Group();
+    let slices = 0, arcs = 0;
+    const pts = [], cols = [];
+    R.manifolds.forEach(m => {
+      if (!shown(m, t)) return;
+      const c = new THREE.Color(componentColour(m, t, 1).replace('rgba', 'rgb').replace(/, [0-9.]+\)$/, ')'));
+      if (isSlice(m)) {
+        if (!rui.cells.checked) return;
+        ++slices;
+        const mat = new THREE.MeshBasicMaterial({ color: c, transparent: true, opacity: 0.35, side: THREE.DoubleSide, depthWrite: false });
+        m.regions.forEach(cell => {
+          const s = new THREE.Shape(shape(cell[0]));
+          cell.slice(1).forEach(h => s.holes.push(new THREE.Path(shape(h))));
+          const mesh = new THREE.Mesh(new THREE.ShapeGeometry(s), mat);
+          mesh.position.z = wrap(m.theta) / PI; group.add(mesh);
+        });
+      } else if (rui.lines.checked) {
+        m.arcs.forEach(a => {
+          ++arcs;
+          // An arc as segments within [-pi, pi): split where it wraps.
+          let lo = a[0], hi = Math.min(a[1], a[0] + 2 * PI);
+          while (lo < hi) {
+            const from = wrap(lo), len = Math.min(hi - lo, PI - from);
+            pts.push(V(m.point[0], m.point[1], from), V(m.point[0], m.point[1], from + len));
+            cols.push(c.r, c.g, c.b, c.r, c.g, c.b);
+            lo += Math.max(len, 1e-9);
+          }
+        });
+      }
+    });
+    if (pts.length) {
+      const g = new THREE.BufferGeometry().setFromPoints(pts);
+      g.setAttribute('color', new THREE.Float32BufferAttribute(cols, 3));
+      group.add(new THREE.LineSegments(g, new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors })));
+    }
+    // The path of the robot, broken where its angle wraps round.
+    const path = [];
+    for (let i = 1; i < way.length; ++i) {
+      const a = way[i - 1], b = way[i], za = wrap(a[2]), zb = za + (b[2] - a[2]);
+      if (zb >= -PI && zb < PI) path.push(V(a[0], a[1], za), V(b[0], b[1], zb));
+    }
+    if (path.length) group.add(new THREE.LineSegments(new THREE.BufferGeometry().setFromPoints(path), new THREE.LineBasicMaterial({ color: 0x000000 })));
+    scene3.add(group);
+    renderer.render(scene3, camera);
+    document.body.dataset.cspace = slices + ' slices, ' + arcs + ' arcs';
+    if (h.get('ink') === '1') document.body.dataset.cspaceInk = ink();
+    note.textContent = 'at t: ' + slices + ' slices, ' + arcs + ' free arcs; x and y across, the angle up (-pi to pi); drag to turn, wheel to zoom';
+  }
+  // #ink=1: the pixels the 3-D view drew (not white), read back from WebGL, for tests.
+  function ink() {
+    const gl = renderer.getContext(), px = new Uint8Array(W * 500 * 4);
+    gl.readPixels(0, 0, W, 500, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    let n = 0;
+    for (let i = 0; i < px.length; i += 4) if (px[i] < 245 || px[i + 1] < 245 || px[i + 2] < 245) ++n;
+    return n;
+  }
+  window.buildCspace = build;
+  on.addEventListener('change', () => build(planningTime()));
+  if (h.get('cspace') === '1') on.checked = true;
+  build(planningTime());
+})();
+)JS";
+
 }  // namespace
 
 std::string recordControls(const RecordFile& record) {
@@ -183,6 +292,11 @@ std::string recordControls(const RecordFile& record) {
       "</select></label><label>tree of <select id=\"rrobot\"></select></label>"
       "<canvas id=\"rgrowth\" width=\"240\" height=\"40\" title=\"built against time\"></canvas>"
       "</div>\n<p id=\"rlabel\" style=\"padding:0 10px\"></p>\n";
+  if (record.record.robots == 1 && manifolds)
+    html +=
+        "<div style=\"padding:0 10px\"><label><input id=\"lcspace\" type=\"checkbox\"> 3-D "
+        "C-space</label> <span id=\"cspace-note\"></span></div><div id=\"cspace\" "
+        "style=\"display:none\"></div>\n";
   html += "<div id=\"rphases\" style=\"padding:0 10px\">" + phaseChart(record.stats) + "</div>\n";
   return html;
 }
@@ -210,5 +324,22 @@ std::string phaseChart(const PlanStatistics& stats) {
 }
 
 const char* recordScript() { return kRecordScript; }
+
+std::string cspaceScripts(const RecordFile& record) {
+  if (record.record.robots != 1 || record.record.manifolds.empty()) return "";
+  const std::string dir = MMS_JAVASCRIPT_DIR "/three/";
+  std::string three, orbit;
+  for (const auto& [file, text] : {std::pair{dir + "three.min.js", &three},
+                                   {dir + "examples/js/controls/OrbitControls.js", &orbit}}) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+      return "<script>document.getElementById('cspace-note').textContent = '(needs "
+             "Debian\\'s libjs-three where the page was written: scripts/setup.sh "
+             "installs it)'; document.getElementById('lcspace').disabled = true;</script>\n";
+    text->assign(std::istreambuf_iterator<char>(in), {});
+  }
+  return "<script>" + three + "</script>\n<script>" + orbit + "</script>\n<script>" +
+         kCspaceScript + "</script>\n";
+}
 
 }  // namespace mms

@@ -9,7 +9,9 @@
 //   - the path's manifolds outlined;
 // with a chart of the run's phases and counts, and one of what was built against time. The
 // page's hash sets them: #rt=0.5 (half-way through the planning), #layers=cells,lines,tree,path,
-// #sub=N, #angle=N (index among the slice angles), #rrobot=N.
+// #sub=N, #angle=N (index among the slice angles), #rrobot=N; for one robot, #cspace=1 opens a
+// 3-D view of its C-space (slices stacked by angle, lines' arcs upright, the path), which turns
+// with the mouse.
 #include <string>
 
 #include "io/RecordIO.h"
@@ -22,5 +24,8 @@ std::string recordControls(const RecordFile& record);
 std::string phaseChart(const PlanStatistics& stats);
 /// The script, run after the player's.
 const char* recordScript();
+/// For one robot, three.js and OrbitControls (read from Debian's libjs-three) and the 3-D view of
+/// its C-space, run after recordScript(); without libjs-three, a note saying so.
+std::string cspaceScripts(const RecordFile& record);
 
 }  // namespace mms

@@ -324,5 +324,46 @@ TEST(View, ARecordShowsASamplersTreeAsItGrew) {
   EXPECT_GT(checked, 3u);
 }
 
+// One robot's C-space in 3-D (three.js from Debian's libjs-three): what the record held at the
+// slider's moment, counted by the page and drawn by WebGL (its pixels read back).
+TEST(View, ARecordsThreeDimensionalViewGrowsWithThePlanning) {
+  const auto chromium = test::runCommand("command -v chromium");
+  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  TempDir dir;
+  const Scene s = keyholeScene(1);
+  RecordFile record;
+  const std::string html = recordPage(s, "mms", dir, record);
+  ASSERT_NE(test::readFile(html).find("OrbitControls"), std::string::npos)
+      << "libjs-three is not installed: scripts/setup.sh installs it";
+  auto page = [&](const std::string& hash) {
+    auto c = test::runCommand(
+        "chromium --headless --no-sandbox --disable-gpu "
+        "--virtual-time-budget=5000 --user-data-dir=" +
+        quote(dir.path("profile")) + " --dump-dom " + quote("file://" + html + "#" + hash));
+    EXPECT_EQ(c.code, 0) << c.err;
+    return c.out;
+  };
+  auto attribute = [](const std::string& dom, const std::string& name) {
+    const size_t at = dom.find(name + "=\"");
+    return at == std::string::npos
+               ? std::string("(none)")
+               : dom.substr(at + name.size() + 2,
+                            dom.find('"', at + name.size() + 2) - at - name.size() - 2);
+  };
+  size_t slices = 0, arcs = 0;
+  for (const RecordManifold& m : record.record.manifolds) {
+    slices += m.family == "slice";
+    arcs += m.arcs.size();
+  }
+  const std::string start = page("cspace=1&ink=1&rt=0"), end = page("cspace=1&ink=1&rt=1");
+  EXPECT_EQ(attribute(start, "data-cspace"), "0 slices, 0 arcs");
+  EXPECT_EQ(attribute(end, "data-cspace"),
+            std::to_string(slices) + " slices, " + std::to_string(arcs) + " arcs");
+  const double before = std::stod(attribute(start, "data-cspace-ink")),
+               after = std::stod(attribute(end, "data-cspace-ink"));
+  EXPECT_GT(before, 0) << "the frame, the obstacles and the path";
+  EXPECT_GT(after, before + 500) << "the slices, arcs and path add to them";
+}
+
 }  // namespace
 }  // namespace mms
