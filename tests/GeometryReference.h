@@ -1,6 +1,9 @@
 #pragma once
 // Independent geometric references for tests: plain double-precision polygon tests, separate
 // from the exact constructions the manifolds use.
+#include <algorithm>
+#include <vector>
+
 #include "geometry/PolygonOps.h"
 #include "mms/Scene.h"
 
@@ -16,6 +19,22 @@ inline bool trueShapeOverlaps(const Scene& s, const Pose& pose) {
   for (const Ring& o : s.obstacles)
     if (ringsIntersect(placed, box, o, boundingBox(o))) return true;
   return false;
+}
+
+/// Whether p lies in one of `cells` (each an outer ring then its holes, even-odd), and in
+/// `margin` how far it is from the nearest edge of any.
+inline bool insideCells(const std::vector<std::vector<Ring>>& cells, Vec2 p, double& margin) {
+  bool in = false;
+  margin = 1e300;
+  for (const auto& cell : cells) {
+    bool inCell = false;
+    for (const Ring& r : cell) {
+      inCell ^= insideRing(r, p);
+      margin = std::min(margin, distanceToEdges(r, p));
+    }
+    in = in || inCell;
+  }
+  return in;
 }
 
 }  // namespace mms::test

@@ -31,22 +31,6 @@ PlanResult recorded(const std::string& planner, const Scene& s, uint64_t seed = 
   return makePlanner(planner, s, p)->solve(Termination(60));
 }
 
-// Whether p lies in a slice cell of the record (outer ring and holes, even-odd), and how far it
-// is from the nearest edge of any.
-bool inCells(const RecordManifold& m, Vec2 p, double& margin) {
-  bool in = false;
-  margin = 1e300;
-  for (const auto& cell : m.regions) {
-    bool inCell = false;
-    for (const Ring& r : cell) {
-      inCell ^= insideRing(r, p);
-      margin = std::min(margin, distanceToEdges(r, p));
-    }
-    in = in || inCell;
-  }
-  return in;
-}
-
 }  // namespace
 
 TEST(Record, OneRobotMmsRecordsItsSlicesAndLinesAsBuilt) {
@@ -109,7 +93,7 @@ TEST(Record, SliceCellsAgreeWithTheCollisionChecker) {
       const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax),
                    rng.uniform(s.bounds.ymin, s.bounds.ymax)};
       double margin;
-      const bool in = inCells(m, p, margin);
+      const bool in = insideCells(m.regions, p, margin);
       if (margin < 1e-3) continue;
       ++checked;
       inside += in;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "GeometryReference.h"
 #include "Support.h"
 #include "geometry/PolygonOps.h"
 #include "io/PathIO.h"
@@ -248,16 +249,8 @@ std::optional<Vec2> pointInASlice(const Scene& s, const PlanRecord& r, double& a
     for (int i = 0; i < 2000; ++i) {
       const Vec2 p{rng.uniform(s.bounds.xmin, s.bounds.xmax),
                    rng.uniform(s.bounds.ymin, s.bounds.ymax)};
-      bool in = false;
-      double margin = 1e300;
-      for (const auto& cell : m.regions) {
-        bool inCell = false;
-        for (const Ring& ring : cell) {
-          inCell ^= insideRing(ring, p);
-          margin = std::min(margin, distanceToEdges(ring, p));
-        }
-        in = in || inCell;
-      }
+      double margin;
+      const bool in = test::insideCells(m.regions, p, margin);
       const Pose a = s.robots[0].start, b = s.robots[0].goal;
       if (in && margin > 4 / scale && std::hypot(p.x - a.x, p.y - a.y) > reach &&
           std::hypot(p.x - b.x, p.y - b.y) > reach) {
