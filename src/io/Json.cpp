@@ -44,15 +44,40 @@ std::string cleanParseMessage(const std::string& what) {
 
 }  // namespace
 
+namespace {
+
+// Whether arrays and objects nest deeper than `limit` anywhere in `text` (brackets inside
+// strings do not count). Scanned before parsing, so a hostile file never makes us build (or
+// later recursively destroy) a deep tree. A parser callback could see the depth too, but its
+// bookkeeping scans an object's parent each time the object ends: quadratic in a long array of
+// objects (`mms view` with a 43 MB record of 205 000 manifolds: 15.4 s, against 3.7 s).
+bool nestsDeeperThan(const std::string& text, int limit) {
+  int depth = 0;
+  bool inString = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (c == '\\')
+        ++i;  // the escaped character, whatever it is
+      else if (c == '"')
+        inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return true;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 Json parseText(const std::string& text, const std::string& source) {
-  // The callback sees the nesting depth before a value is built, so a hostile file cannot
-  // make us build (or later recursively destroy) a deep tree.
-  auto limitDepth = [](int depth, Json::parse_event_t, Json&) {
-    if (depth > kMaxDepth) throw TooDeep{};
-    return true;
-  };
   try {
-    return Json::parse(text, limitDepth);
+    if (nestsDeeperThan(text, kMaxDepth)) throw TooDeep{};
+    return Json::parse(text);
   } catch (const TooDeep&) {
     throw InputError(source + ": (document): JSON nested deeper than " + std::to_string(kMaxDepth) +
                      " levels");

@@ -8,6 +8,7 @@
 
 #include "Support.h"
 #include "geometry/PolygonOps.h"
+#include "io/Json.h"
 #include "io/PathIO.h"
 #include "io/SceneIO.h"
 #include "mms/Errors.h"
@@ -238,6 +239,24 @@ INSTANTIATE_TEST_SUITE_P(
                 },
                 nullptr, "robots[0].start", "robot 'a' collides with obstacles[1]"}),
     [](const auto& info) { return std::string(info.param.label); });
+
+// The nesting limit counts brackets of arrays and objects, not those inside strings (escaped
+// quotes included): 64 levels are read, 65 are refused.
+TEST(BadSceneText, NestingIsCountedOutsideStrings) {
+  auto depth = [](int n, const std::string& inside) {
+    return std::string(size_t(n), '[') + inside + std::string(size_t(n), ']');
+  };
+  EXPECT_NO_THROW(json_in::parseText(depth(64, "1"), "f.json"));
+  try {
+    json_in::parseText(depth(65, "1"), "f.json");
+    ADD_FAILURE() << "65 levels were read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "f.json: (document): JSON nested deeper than 64 levels");
+  }
+  const std::string brackets = "\"a \\\" " + std::string(200, '[') + std::string(200, '{') + "\"";
+  const json_in::Json j = json_in::parseText(depth(60, brackets), "f.json");
+  EXPECT_EQ(j.dump().size(), depth(60, brackets).size());
+}
 
 // Cases whose text is built at run time.
 TEST(BadSceneText, DeepNestingAndOverflow) {
