@@ -85,7 +85,7 @@ struct PlanRecord {
 /// a file stays under about 50 MB however long the run.
 struct RecordBudget {
   /// Bytes of manifolds in the file, as estimated per manifold: 130 for its stamps and counts,
-  /// 18 per vertex of its cells, 20 per arc.
+  /// 18 per vertex of its cells, 20 per arc; and 40 per robot held in each subspace.
   size_t bytes = 40'000'000;
   size_t numbers = 1'000'000;  // a sampler's states, 3 numbers per robot each (about 9 bytes)
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace mms {
 
@@ -42,13 +43,22 @@ void appendRoadmap(const Roadmap& roadmap, const RecordBudget& budget, PlanRecor
   std::map<std::string, uint32_t> kindOf;
   std::vector<std::pair<uint32_t, float>> stamps;  // (kind, time) per manifold
   size_t bytes = 0;
+  std::set<uint32_t> groups;
   for (size_t id = 0; id < n; ++id) {
+    const Roadmap::Entry& e = roadmap.entry(uint32_t(id));
     RecordManifold m;
-    roadmap.manifold(uint32_t(id)).sketch(m, false);
+    e.manifold->sketch(m, false);
     const auto [it, added] = kindOf.emplace(m.family, uint32_t(kinds.size()));
     if (added) kinds.push_back(m.family);
-    stamps.emplace_back(it->second, roadmap.entry(uint32_t(id)).at);
+    stamps.emplace_back(it->second, e.at);
     bytes += fileBytes(m);
+    // Its subspace's entry, counted as if every subspace were kept (many robots held: 40
+    // bytes each, in as many subspaces as manifolds at worst).
+    if (groups.insert(e.group).second) {
+      RecordSubspace frame;
+      e.manifold->sketchFrame(frame);
+      bytes += 40 * (1 + frame.held.size());
+    }
   }
   out.growth = growthOf(std::move(stamps), kinds);
   const size_t budgetBytes = std::max<size_t>(budget.bytes, 1),
