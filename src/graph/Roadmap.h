@@ -85,7 +85,6 @@ class Roadmap {
   // per manifold; tracking the components a pass over the nodes per search, so it is asked for.
   /// Starts the clock manifolds are stamped with, unless it runs (multi-query: the first query).
   void startClock();
-  double seconds() const { return clock_.seconds(); }
   /// Manifolds added from now on belong to round `round`.
   void beginRound(uint32_t round) { round_ = round; }
   /// Whether noteSearch stamps when manifolds join the start's and the goal's component.

@@ -44,6 +44,9 @@ std::vector<Rgb> readPng(const std::string& file, int& w, int& h) {
   return px;
 }
 
+// Headless Chromium draws every page these tests look at.
+bool chromiumInstalled() { return test::runCommand("command -v chromium").code == 0; }
+
 TEST(View, SavedRoadmapReachesThePathFileAndThePage) {
   TempDir dir;
   const std::string scene = test::scenario("one-robot/bar-slot.json");
@@ -94,8 +97,7 @@ std::vector<Rgb> screenshot(TempDir& dir, const std::string& html, const std::st
 }
 
 TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {
-  const auto chromium = test::runCommand("command -v chromium");
-  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  ASSERT_TRUE(chromiumInstalled()) << "chromium is not installed: scripts/setup.sh installs it";
   TempDir dir;
   // A square robot translating from left to right across an empty room, then turning.
   Scene s;
@@ -142,8 +144,7 @@ TEST(View, HeadlessBrowserDrawsTheRobotWhereTheSliderSays) {
 // Thirty exact discs: the legend folds, and a robot named in the link is drawn in full while
 // the others fade.
 TEST(View, ARobotNamedInTheLinkStandsOutAmongMany) {
-  const auto chromium = test::runCommand("command -v chromium");
-  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  ASSERT_TRUE(chromiumInstalled()) << "chromium is not installed: scripts/setup.sh installs it";
   TempDir dir;
   Scene s;
   s.name = "many discs";
@@ -191,8 +192,7 @@ TEST(View, ARobotNamedInTheLinkStandsOutAmongMany) {
 // #bench=N draws N frames and puts the mean time of one on the page, for measuring playback
 // (the time itself is the benchmark's to judge, not a test's).
 TEST(View, TheFrameMeterPutsATimeOnThePage) {
-  const auto chromium = test::runCommand("command -v chromium");
-  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  ASSERT_TRUE(chromiumInstalled()) << "chromium is not installed: scripts/setup.sh installs it";
   TempDir dir;
   const Scene s = discGridScene(1, 40, 10);
   Path p;
@@ -264,8 +264,7 @@ std::optional<Vec2> pointInASlice(const Scene& s, const PlanRecord& r, double& a
 
 // The record's slider: a slice's cell is drawn from the moment the slice was built, not before.
 TEST(View, ARecordShowsEachSliceFromTheMomentItWasBuilt) {
-  const auto chromium = test::runCommand("command -v chromium");
-  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  ASSERT_TRUE(chromiumInstalled()) << "chromium is not installed: scripts/setup.sh installs it";
   TempDir dir;
   const Scene s = keyholeScene(2);
   RecordFile record;
@@ -290,8 +289,7 @@ TEST(View, ARecordShowsEachSliceFromTheMomentItWasBuilt) {
 
 // A sampler's record: its tree's edges appear as the slider passes the time they were found.
 TEST(View, ARecordShowsASamplersTreeAsItGrew) {
-  const auto chromium = test::runCommand("command -v chromium");
-  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  ASSERT_TRUE(chromiumInstalled()) << "chromium is not installed: scripts/setup.sh installs it";
   TempDir dir;
   const Scene s = keyholeScene(1, 0.3);
   RecordFile record;
@@ -320,8 +318,7 @@ TEST(View, ARecordShowsASamplersTreeAsItGrew) {
 // One robot's C-space in 3-D (three.js from Debian's libjs-three): what the record held at the
 // slider's moment, counted by the page and drawn by WebGL (its pixels read back).
 TEST(View, ARecordsThreeDimensionalViewGrowsWithThePlanning) {
-  const auto chromium = test::runCommand("command -v chromium");
-  ASSERT_EQ(chromium.code, 0) << "chromium is not installed: scripts/setup.sh installs it";
+  ASSERT_TRUE(chromiumInstalled()) << "chromium is not installed: scripts/setup.sh installs it";
   TempDir dir;
   const Scene s = keyholeScene(1);
   RecordFile record;
