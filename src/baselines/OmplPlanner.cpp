@@ -516,6 +516,7 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   Stopwatch watch;
   const ProgressReporter reporter(progress, made, total);
   const ob::PlannerStatus status = setup.solve(ob::PlannerTerminationCondition([&] {
+    ++r.iterations;
     reporter();
     return stop();
   }));

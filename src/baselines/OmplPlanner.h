@@ -47,9 +47,12 @@ struct OmplResult {
   double simplifySeconds = 0;  // OMPL's simplifier and its path's certification, after `seconds`
   size_t states = 0;           // vertices of the planner's graph or tree
   size_t edges = 0;            // its edges
-  RecordTree tree;             // with OmplSettings::record: the tree or roadmap, thinned
-  RecordGrowth growth;         // and how many states it had by when
-  double recordSeconds = 0;    // of `seconds`, reading it out
+  /// Checks of the termination condition: one per iteration of the planner's loop, so the
+  /// same for the same seed whatever the load (the portfolio's budget for its sampler).
+  size_t iterations = 0;
+  RecordTree tree;           // with OmplSettings::record: the tree or roadmap, thinned
+  RecordGrowth growth;       // and how many states it had by when
+  double recordSeconds = 0;  // of `seconds`, reading it out
 };
 
 /// Called about once a second while OMPL's planner works (from one of its threads), with

@@ -17,7 +17,7 @@ PlanStatistics statistics(const OmplResult& r) {
   s.seconds = r.seconds;
   s.graphNodes = r.states;
   s.graphEdges = r.edges;
-  s.counts = {{"states", r.states}};
+  s.counts = {{"states", r.states}, {"iterations", r.iterations}};
   return s;
 }
 

@@ -1,13 +1,13 @@
-// "auto", the default planner: MMS and a sampling planner race on two cores, and the first
-// certified path wins. A user does not know in advance whether a scene is tight: where the
-// passages are wide a sampler needs a few hundred states and MMS would still be building its
-// first slices; where they are narrow MMS wins by orders of magnitude. Racing the two makes the
-// default never slower than the sampler and never much slower than MMS.
+// "auto", the default planner: MMS and a sampling planner on two cores. A user does not know in
+// advance whether a scene is tight: where the passages are wide a sampler needs a few hundred
+// states and MMS would still be building its first slices; where they are narrow MMS wins by
+// orders of magnitude.
 //
-// Determinism: each member is deterministic for its seed, and the portfolio returns a member's
-// path unchanged, naming it (PlanStatistics::solvedBy) and its parameters; `--planner NAME`
-// with those and the same seed reproduces it exactly. Which member wins a close race can depend on
-// the machine's load.
+// Determinism: the sampler's path is taken when it finds one within a budget of iterations, and
+// MMS's otherwise. Each member is deterministic for its seed and the budget is counted, not
+// timed, so which member's path is returned does not depend on the machine's load; the clock
+// only decides how soon (docs/planner.md, "The default: a portfolio"). The portfolio returns a
+// member's path unchanged, naming it (PlanStatistics::solvedBy).
 #include <execinfo.h>
 #include <malloc.h>
 #include <pthread.h>
@@ -18,7 +18,6 @@
 #include <condition_variable>
 #include <exception>
 #include <functional>
-#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -38,6 +37,8 @@ const std::map<std::string, double> kSamplerParams{{"certified-motions", 1}, {"f
 /// How long the sampler runs alone before MMS starts: on open scenes it is then often done,
 /// and no second thread is paid for (docs/planner.md, "The default: a portfolio").
 constexpr std::chrono::milliseconds kHeadStart{2};
+/// The sampler's iterations by default: its path is taken when it finds one within them.
+constexpr double kSamplerIterations = 2000;
 
 /// MMS's large blocks kept in the heap, so that mapping them does not hold the memory-map lock
 /// the sampler's page faults need (the command line's jemalloc ignores this); and what a second
@@ -98,13 +99,15 @@ class CoresApart {
   bool pinned_ = false;
 };
 
-/// MMS's side of the race. It begins only once the sampler has run for the head start: the
-/// sampler tells it of each check of its termination condition, and the first check past the
-/// head start makes MMS and starts it on a thread of its own. On open scenes the sampler is done
-/// before that, and there is neither MMS nor a second thread: MMS's construction (exact
-/// obstacles, arrangements) beside a 2 ms sampler slowed it by 5-8 % on the bends (seeds 1-10,
-/// median per scene), and a process with a second thread pays for atomic reference counts and
-/// locked allocation in every shared pointer and malloc of the sampler.
+/// MMS's side of the race, and the sampler's budget. MMS begins only once the sampler has run
+/// for the head start: the sampler tells it of each check of its termination condition (one per
+/// iteration), and the first check past the head start makes MMS and starts it on a thread of
+/// its own. The same checks, counted, end the sampler once its budget is spent; MMS finishing
+/// does not, so that the sampler's path within its budget wins whoever was faster. On open scenes
+/// the sampler is done before that, and there is neither MMS nor a second thread: MMS's
+/// construction (exact obstacles, arrangements) beside a 2 ms sampler slowed it by 5-8 % on the
+/// bends (seeds 1-10, median per scene), and a process with a second thread pays for atomic
+/// reference counts and locked allocation in every shared pointer and malloc of the sampler.
 ///
 /// When the sampler wins, MMS's thread is left to stop on its own: it checks the race's end
 /// between exact steps, and the step it is in took 0.1-2 ms (mean 0.5 ms over 36 open-clutter
@@ -115,14 +118,16 @@ class Challenger final : public Termination::Watcher {
  public:
   using Maker = std::function<std::unique_ptr<Planner>()>;
   /// `mms`: the MMS planner of earlier queries, or null (`make` makes it when it starts); both
-  /// must outlive this.
+  /// must outlive this. `iterations`: the sampler's budget.
   Challenger(std::unique_ptr<Planner>& mms, const Maker& make, const Termination& stop,
-             const Planner::Progress& progress)
+             const Planner::Progress& progress, size_t iterations)
       : mms_(mms),
         make_(make),
         progress_(&progress),
-        race_(stop.endingAlsoOn(&ended_)),
-        apart_(race_.cancelledBy(&cancelled_).watchedBy(nullptr)),
+        budget_(iterations),
+        sampler_(stop.endingAlsoOn(&spent_)),
+        here_(stop.endingAlsoOn(&ended_)),
+        apart_(here_.cancelledBy(&cancelled_)),
         headStartEnds_(Termination::Clock::now() + kHeadStart) {}
   ~Challenger() {
     cores_.restore();  // the sampler threw: its cores back to it (after a normal end: nothing)
@@ -132,10 +137,11 @@ class Challenger final : public Termination::Watcher {
   Challenger(const Challenger&) = delete;
   Challenger& operator=(const Challenger&) = delete;
 
-  /// The race's condition: the caller's, ending also once either member has finished.
-  const Termination& race() const { return race_; }
+  /// The sampler's condition: the caller's, ending also once its budget is spent.
+  const Termination& sampler() const { return sampler_; }
   const Stopwatch& clock() const { return clock_; }
   void onCheck(Termination::Clock::time_point now) override {
+    if (++checks_ >= budget_) spent_ = true;  // this check's iteration is the budget's last
     if (started_.load(std::memory_order_relaxed) || now < headStartEnds_) return;
     if (started_.exchange(true)) return;
     prepareTheProcess();  // not before: a sampler done within the head start runs as alone
@@ -156,17 +162,12 @@ class Challenger final : public Termination::Watcher {
   void runHere() {
     if (started_.exchange(true)) return;
     prepareTheProcess();
-    run(race_);
+    run(here_);
   }
-  /// Ends the race: MMS stops at its next check.
+  /// Ends MMS: it stops at its next check.
   void end() { ended_ = true; }
   /// On the sampler's thread, once it is done: its cores back to it.
   void restoreCores() { cores_.restore(); }
-  /// Whether MMS has finished (or never started); its result is then final.
-  bool finished() {
-    const std::lock_guard lock(doneMutex_);
-    return !threadStarted_ || done_;
-  }
   /// Waits for MMS to finish, passing the caller's cancel flag on. On the sampler's thread.
   void await(const Termination& stop) {
     if (!threadStarted_) return;
@@ -189,7 +190,6 @@ class Challenger final : public Termination::Watcher {
     if (failure_) std::rethrow_exception(failure_);
   }
   PlanResult& result() { return own_; }
-  double foundAt() const { return ownAt_; }
 
  private:
   /// MMS's thread, on `cores` if given; whether it started.
@@ -218,12 +218,10 @@ class Challenger final : public Termination::Watcher {
       if (!mms_ && !stop()) mms_ = make_();
       if (!stop()) {
         own_ = mms_->solve(stop, relay);
-        if (own_.found()) ownAt_ = clock_.seconds();
       }
     } catch (...) {
       failure_ = std::current_exception();
     }
-    ended_ = true;
     {
       const std::lock_guard lock(doneMutex_);
       done_ = true;
@@ -236,10 +234,14 @@ class Challenger final : public Termination::Watcher {
   std::mutex progressMutex_;
   const Planner::Progress* progress_;  // null once muted
   const Stopwatch clock_;
-  std::atomic<bool> ended_{false};
+  std::atomic<bool> ended_{false};      // MMS is to stop
+  std::atomic<bool> spent_{false};      // the sampler's budget is spent
   std::atomic<bool> cancelled_{false};  // the caller's flag, passed on while it waits
   std::atomic<bool> started_{false};
-  const Termination race_;   // the sampler's, and MMS's when it runs on the caller's thread
+  const size_t budget_;
+  size_t checks_ = 0;  // the sampler's, on its thread
+  const Termination sampler_;
+  const Termination here_;   // MMS's when it runs on the caller's thread
   const Termination apart_;  // MMS's on its own thread
   const Termination::Clock::time_point headStartEnds_;
   pthread_t thread_{};
@@ -249,9 +251,22 @@ class Challenger final : public Termination::Watcher {
   bool done_ = false;
   CoresApart cores_;
   PlanResult own_;
-  double ownAt_ = std::numeric_limits<double>::infinity();
   std::exception_ptr failure_;
 };
+
+/// The sampler's budget, declared once for the command line, benchmarks and docs.
+const ParamSpec& samplerIterations() {
+  static const ParamSpec spec{
+      "sampler-iterations",
+      ParamSpec::Type::Integer,
+      0,
+      1e9,
+      kSamplerIterations,
+      std::string("Iterations of ") + kSampler +
+          " beside MMS: its path is taken when it finds one within them, MMS's otherwise, so "
+          "the same seed gives the same path whatever the load; 0: MMS alone"};
+  return spec;
+}
 
 class Portfolio : public Planner {
  public:
@@ -260,48 +275,40 @@ class Portfolio : public Planner {
       : scene_(scene),
         makeMms_(std::move(makeMms)),
         samplerParams_{params.seed, kSamplerParams, false, params.exitsAfterRun, params.record},
+        iterations_(size_t(paramValue(params, samplerIterations()))),
         mmsAlone_(makeMms_ && params.roadmapPicture && scene.robots.size() == 1) {}
   ~Portfolio() override { finishBackgroundWork(); }
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
     finishBackgroundWork();  // the last race's MMS, which this one may use again
-    if (mmsAlone_) {
-      if (!mms_) mms_ = makeMms_();
-      return named(mms_->solve(stop, progress), "mms");
-    }
+    if (mmsAlone_ || (iterations_ == 0 && makeMms_)) return runMmsAlone(stop, progress);
     const std::unique_ptr<Planner> sampler = makePlanner(kSampler, scene_, samplerParams_);
     if (!makeMms_) return named(sampler->solve(stop, progress), kSampler);
     // The sampler on this thread, where the memory is warm; MMS joins it after the head start.
-    auto challenger = std::make_unique<Challenger>(mms_, makeMms_, stop, progress);
+    auto challenger = std::make_unique<Challenger>(mms_, makeMms_, stop, progress, iterations_);
     const Stopwatch& clock = challenger->clock();
-    PlanResult sampled = sampler->solve(challenger->race().watchedBy(challenger.get()));
-    const double sampledAt = clock.seconds();
+    PlanResult sampled = sampler->solve(challenger->sampler().watchedBy(challenger.get()));
     challenger->restoreCores();
-    if (sampled.found() && !challenger->finished()) {
-      // Won outright: MMS stops in the background (finishBackgroundWork).
+    if (sampled.found()) {
+      // Found within its budget: its path, whether MMS has one or not. MMS stops in the
+      // background (finishBackgroundWork).
       challenger->end();
       challenger->mute();
       sampled.stats.seconds = clock.seconds();
       running_ = std::move(challenger);
       return named(std::move(sampled), kSampler);
     }
-    // Without a path (none in its time, or one the certifier refused) the sampler leaves the
-    // rest of the time to MMS.
-    if (sampled.found())
-      challenger->end();
-    else
-      challenger->runHere();
+    // Without a path (none within its budget or its time, or one the certifier refused) the
+    // sampler leaves the rest of the time to MMS.
+    challenger->runHere();
     challenger->await(stop);
     challenger->join();
     challenger->mute();
-    // What MMS threw (no memory left) matters only when the sampler has no path to give.
-    if (!sampled.found()) challenger->rethrow();
-    PlanResult& own = challenger->result();
-    const bool samplerWon = sampled.found() && (!own.found() || sampledAt < challenger->foundAt());
-    PlanResult out = samplerWon ? std::move(sampled) : std::move(own);
+    challenger->rethrow();
+    PlanResult out = std::move(challenger->result());
     if (!out.found() && stop.cancelled()) out.status = PlanStatus::Cancelled;
     out.stats.seconds = clock.seconds();
-    return named(std::move(out), samplerWon ? kSampler : "mms");
+    return named(std::move(out), "mms");
   }
 
   void finishBackgroundWork() override { running_.reset(); }
@@ -319,6 +326,10 @@ class Portfolio : public Planner {
   }
 
  private:
+  PlanResult runMmsAlone(const Termination& stop, const Progress& progress) {
+    if (!mms_) mms_ = makeMms_();
+    return named(mms_->solve(stop, progress), "mms");
+  }
   static PlanResult named(PlanResult r, const char* member) {
     if (r.found()) r.stats.solvedBy = member;
     return r;
@@ -328,6 +339,7 @@ class Portfolio : public Planner {
   Challenger::Maker makeMms_;
   std::unique_ptr<Planner> mms_;
   PlannerParams samplerParams_;
+  size_t iterations_;  // the sampler's budget; 0: MMS alone
   /// A picture of the roadmap asks for MMS's cells and lines (one robot), which a sampler's win
   /// would not have: MMS runs alone.
   bool mmsAlone_;
@@ -341,11 +353,13 @@ PlannerInfo portfolioPlannerInfo() {
   PlannerInfo info;
   info.name = "auto";
   info.summary = std::string("MMS and OMPL's ") + kSampler +
-                 " (certified motions, free samples) race on two cores; the first certified path "
-                 "wins (the statistics name it). "
+                 " (certified motions, free samples) on two cores; the sampler's certified path "
+                 "if it finds one within its iterations (--sampler-iterations), else MMS's (the "
+                 "statistics name it). "
                  "Scenes MMS does not take go to the sampler alone; with a roadmap picture asked "
                  "for (one robot), MMS runs alone";
   info.params = mms.params;
+  info.params.push_back(samplerIterations());
   info.multiQuery = true;
   info.make = [make = mms.make](const Scene& scene, const PlannerParams& params,
                                 const std::string& source) -> std::unique_ptr<Planner> {

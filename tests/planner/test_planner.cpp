@@ -1,10 +1,12 @@
 // MMS for one robot: bundled scenes solved with certified paths, the sealed scene refused in
 // time, the same seed giving the same path.
 #include <gtest/gtest.h>
+#include <sched.h>
 
 #include <atomic>
 #include <chrono>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -73,8 +75,7 @@ TEST(Plan, SearchStopsBuildingOnceStartAndGoalConnect) {
   }
 }
 
-// MMS alone: the default portfolio returns whichever member finishes first, which a loaded
-// machine can change (its own test checks that the winner alone reproduces the path).
+// MMS alone (the default planner's own test is below).
 TEST(Plan, SameSeedSamePathFileDifferentSeedOtherwise) {
   TempDir dir;
   const std::string scene = quote(scenario("one-robot/bug-trap.json"));
@@ -119,6 +120,73 @@ TEST(Plan, SamePathFileUnderLoad) {
   EXPECT_EQ(busyKeyhole, idleKeyhole);
   EXPECT_EQ(busyNiche, idleNiche);
   EXPECT_FALSE(idleKeyhole.empty());
+}
+
+namespace {
+
+nlohmann::json statisticsOf(const std::string& pathFile) {
+  return nlohmann::json::parse(pathFile)["statistics"];
+}
+
+}  // namespace
+
+// The default planner takes its sampler's path when the sampler, run alone with the same seed,
+// finds one within the budget of iterations, and MMS's otherwise: on the budget's edge, and on
+// close races (the first path found had won them, and a keyhole or discs' swap went either way).
+// The rule counts iterations, so neither the member nor the file changes when the machine is
+// loaded: planned idle, then squeezed onto one core beside two spinning threads.
+TEST(Plan, DefaultPlannerSamePathFileUnderLoad) {
+  TempDir dir;
+  auto plan = [&](const std::string& scene, const std::string& options, const std::string& name) {
+    const std::string out = dir.path(name);
+    const Outcome r =
+        runMms("plan " + quote(scene) + " --seed 1 -q " + options + " -o " + quote(out));
+    EXPECT_EQ(r.code, 0) << scene << " " << options << ": " << r.out << r.err;
+    return readFile(out);
+  };
+  const std::vector<std::pair<std::string, std::string>> scenes{
+      {"keyhole", "1"}, {"discs-swap", "2"}, {"bend", "7"}, {"bend", "2"}};
+  std::vector<std::string> files, idle;
+  std::vector<size_t> alone;  // the sampler's iterations to its path, alone
+  for (const auto& [family, seed] : scenes) {
+    files.push_back(dir.path(family + "-" + seed + ".json"));
+    ASSERT_EQ(runMms("scenario " + family + " --seed " + seed + " -o " + quote(files.back())).code,
+              0);
+    const nlohmann::json sampler = statisticsOf(plan(
+        files.back(), "--planner rrtconnect --certified-motions --free-samples", "sampler.json"));
+    alone.push_back(sampler["counts"]["iterations"].get<size_t>());
+    idle.push_back(plan(files.back(), "", family + seed + "-idle.json"));
+    EXPECT_EQ(statisticsOf(idle.back())["solved_by"], alone.back() <= 2000 ? "rrtconnect" : "mms")
+        << files.back() << ": the sampler alone took " << alone.back() << " iterations";
+  }
+  // The budget's edge, exactly.
+  const size_t edge = alone.back();
+  EXPECT_EQ(statisticsOf(plan(files.back(), "--sampler-iterations " + std::to_string(edge),
+                              "edge.json"))["solved_by"],
+            "rrtconnect");
+  EXPECT_EQ(statisticsOf(plan(files.back(), "--sampler-iterations " + std::to_string(edge - 1),
+                              "below.json"))["solved_by"],
+            "mms");
+
+  cpu_set_t all, one;
+  ASSERT_EQ(sched_getaffinity(0, sizeof all, &all), 0);
+  CPU_ZERO(&one);
+  CPU_SET(sched_getcpu(), &one);
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);  // the children inherit it
+  std::atomic<bool> stop{false};
+  std::vector<std::thread> load;
+  for (int i = 0; i < 2; ++i)
+    load.emplace_back([&stop] {
+      volatile double x = 1;
+      while (!stop.load(std::memory_order_relaxed)) x = x * 1.0000001 + 1e-9;
+    });
+  std::vector<std::string> busy;
+  for (size_t i = 0; i < files.size(); ++i)
+    busy.push_back(plan(files[i], "", std::to_string(i) + "-busy.json"));
+  stop = true;
+  for (std::thread& t : load) t.join();
+  sched_setaffinity(0, sizeof all, &all);
+  for (size_t i = 0; i < files.size(); ++i) EXPECT_EQ(busy[i], idle[i]) << files[i];
 }
 
 // Slices (one robot) and overlays (two robots) are built in parallel batches and added in
