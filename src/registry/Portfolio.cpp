@@ -264,7 +264,8 @@ const ParamSpec& samplerIterations() {
       kSamplerIterations,
       std::string("Iterations of ") + kSampler +
           " beside MMS: its path is taken when it finds one within them, MMS's otherwise, so "
-          "the same seed gives the same path whatever the load; 0: MMS alone"};
+          "the same seed gives the same path whatever the load; 0: MMS alone (default " +
+          formatNumber(kSamplerIterations) + ")"};
   return spec;
 }
 
