@@ -7,6 +7,7 @@
 #include "check/PathChecker.h"
 #include "geometry/SpinPlace.h"
 #include "manifolds/Pivot.h"
+#include "path/HeldRoute.h"
 
 namespace mms {
 
@@ -45,8 +46,27 @@ class Optimizer {
   void run(std::vector<Config>& w) {
     limit_ = settings_.maxWork;
     turnShortWay(w);
-    // Rounds of shortcuts until one stops paying: the first rounds take most of what there is,
-    // and on an easy scene the rest would cost more than the planning did.
+    shortcutRounds(w);
+    // Turns made the short way only along a new route, tried once the shortcuts have taken
+    // what they could (most of a wandering sampler's back and forth): each costs exact slices.
+    // A route taken runs through the midpoints of a triangulation, which more shortcuts
+    // straighten.
+    const size_t before = s_.accepted;
+    routing_ = true;
+    turnShortWay(w);
+    routing_ = false;
+    if (s_.accepted > before) shortcutRounds(w);
+    s_.slices = routes_.slicesBuilt();
+    if (settings_.objective == PathObjective::Clearance) {
+      limit_ = s_.evaluations * workPerEvaluation_ + settings_.maxWork;  // a budget of its own
+      pushAwayFromContacts(w);
+    }
+  }
+
+ private:
+  // Rounds of shortcuts until one stops paying: the first rounds take most of what there is,
+  // and on an easy scene the rest would cost more than the planning did.
+  void shortcutRounds(std::vector<Config>& w) {
     double cost = pathCost(checker_, w);
     for (size_t round = 0; round < settings_.rounds && !done(); ++round) {
       const size_t before = s_.accepted;
@@ -60,13 +80,8 @@ class Optimizer {
       if (s_.accepted == before || cost - now < settings_.minGain * cost) break;
       cost = now;
     }
-    if (settings_.objective == PathObjective::Clearance) {
-      limit_ = s_.evaluations * workPerEvaluation_ + settings_.maxWork;  // a budget of its own
-      pushAwayFromContacts(w);
-    }
   }
 
- private:
   bool rigid(size_t robot) const { return scene_.robots[robot].motion != Motion::Translate; }
 
   // Out of work: the attempts' evaluations are spent, or the time limit struck.
@@ -161,8 +176,9 @@ class Optimizer {
     const std::vector<double> cum = cumulativeCost(w);
     const std::vector<Rewind> candidates = rewinds(w, runs, c);
     spinPlaces_.clear();
-    const bool taken = rewindPass(w, robot, runs, cum, candidates, false) ||
-                       rewindPass(w, robot, runs, cum, candidates, true);
+    const bool taken = routing_ ? routedSpin(w, robot, runs, cum, candidates)
+                                : rewindPass(w, robot, runs, cum, candidates, false) ||
+                                      rewindPass(w, robot, runs, cum, candidates, true);
     changed();
     return taken;
   }
@@ -201,6 +217,114 @@ class Optimizer {
       }
     }
     return false;
+  }
+
+  // A third pass, for the windows that save the most: the window's net turn made about the
+  // robot's spinning centre at a clear place near where it turned, the robot routed there at
+  // its angle before the window and on from there at its angle after it, through exact slices
+  // (HeldRoutes): a key that went down a slot bit last goes down bit first. The places are
+  // climbed to from where the window turned most, in that order: a sampler's key may turn most
+  // outside, where it cannot be routed on at its new angle.
+  bool routedSpin(std::vector<Config>& w, size_t robot, const std::vector<Run>& runs,
+                  const std::vector<double>& cum, const std::vector<Rewind>& candidates) {
+    if (!routes_.routes()) return false;
+    const size_t c = 3 * robot + 2;
+    size_t tried = 0;
+    for (const Rewind& r : candidates) {
+      if (r.saving < kRouteSaving || tried++ == kRouteWindows || done()) return false;
+      const size_t from = runs[r.p].first, to = runs[r.q].second;
+      for (const Vec2 at : placesToSpin(w, from, to, robot)) {
+        // No route is shorter than straight to the place and on: the slices are not built
+        // for a detour that would cost more than the window does.
+        const SpinEnds ends = spinEnds(w, from, to, robot, r.turns, at);
+        if (leastRoutedCost(ends, robot) >= cum[to] - cum[from]) continue;
+        std::vector<Config> candidate = routedStretch(w[from], ends, robot, at);
+        if (candidate.empty() || pathCost(checker_, candidate) >= cum[to] - cum[from] ||
+            !certified(candidate))
+          continue;
+        for (size_t k = to + 1; k < w.size(); ++k) w[k][c] += 2 * M_PI * r.turns;
+        w.erase(w.begin() + long(from), w.begin() + long(to) + 1);
+        w.insert(w.begin() + long(from), candidate.begin(), candidate.end());
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // A routed window's poses: its ends, and the robot spinning at `at` before and after the
+  // turn (b at the end's angle plus `turns` full turns).
+  struct SpinEnds {
+    Pose first, a, b, last;
+  };
+  SpinEnds spinEnds(const std::vector<Config>& w, size_t from, size_t to, size_t robot,
+                    double turns, Vec2 at) {
+    SpinEnds e{poseOf(w[from], robot), {}, {}, poseOf(w[to], robot)};
+    e.a = poseWithPointAt(spinCentre(robot), at, e.first.theta);
+    e.b = poseWithPointAt(spinCentre(robot), at, e.last.theta + 2 * M_PI * turns);
+    return e;
+  }
+
+  // What routedStretch costs at least: straight to the place, the turn, straight on.
+  double leastRoutedCost(const SpinEnds& e, size_t robot) const {
+    return poseCost(checker_, robot, e.first, e.a) + poseCost(checker_, robot, e.a, e.b) +
+           poseCost(checker_, robot, e.b, e.last);
+  }
+
+  // Distinct clear places climbed to from the segments of w[from..to] that turn most.
+  std::vector<Vec2> placesToSpin(const std::vector<Config>& w, size_t from, size_t to,
+                                 size_t robot) {
+    const size_t c = 3 * robot + 2;
+    std::vector<size_t> segments;
+    for (size_t k = from; k < to; ++k)
+      if (w[k + 1][c] != w[k][c]) segments.push_back(k);
+    std::stable_sort(segments.begin(), segments.end(), [&](size_t a, size_t b) {
+      return std::fabs(w[a + 1][c] - w[a][c]) > std::fabs(w[b + 1][c] - w[b][c]);
+    });
+    const double radius = checker_.radius(robot);
+    const Vec2 centre = spinCentre(robot);
+    std::vector<Vec2> places;
+    for (size_t i = 0; i < segments.size() && places.size() < kRoutePlaces && i < kRouteClimbs;
+         ++i) {
+      const size_t k = segments[i];
+      const Vec2 p = Transform(poseOf(lerp(w[k], w[k + 1], 0.5), robot))(centre);
+      const Vec2 at = clearestNear(scene_, p, 0.25 * radius, 2 * radius);
+      // Where the robot cannot spin whole, a quarter's sweep may still fit, but the routes
+      // would cost two slices on the chance: the bends' and doors' places are too small.
+      if (wallDistance(scene_, at) < spinRadius(robot)) continue;
+      const bool known = std::any_of(places.begin(), places.end(), [&](Vec2 q) {
+        return std::hypot(q.x - at.x, q.y - at.y) < 0.05 * radius;
+      });
+      if (!known) places.push_back(at);
+    }
+    return places;
+  }
+
+  // A window from `start` made as: routed at its angle to `ends.a`, turned there about the
+  // spinning centre at `at` to `ends.b`, routed on at that angle to `ends.last`. Empty where a
+  // route is not found.
+  std::vector<Config> routedStretch(const Config& start, const SpinEnds& ends, size_t robot,
+                                    Vec2 at) {
+    const Pose &first = ends.first, &last = ends.last, &a = ends.a, &b = ends.b;
+    const auto before = routes_.route(first.theta, {first.x, first.y}, {a.x, a.y}, stop_);
+    const auto after =
+        before ? routes_.route(b.theta, {b.x, b.y}, {last.x, last.y}, stop_) : std::nullopt;
+    if (!after) return {};
+    std::vector<Config> out{start};
+    auto along = [&](const std::vector<Vec2>& route, double theta) {
+      for (size_t k = 1; k < route.size(); ++k) {
+        out.push_back(start);
+        setPose(out.back(), robot, {route[k].x, route[k].y, theta});
+      }
+    };
+    along(*before, first.theta);
+    Config spun = out.back();
+    setPose(spun, robot, b);
+    const std::vector<Config> turn =
+        turnAbout(out.back(), spun, robot, spinCentre(robot), at, kSpinStep);
+    out.insert(out.end(), turn.begin(), turn.end());
+    out.push_back(spun);
+    along(*after, b.theta);
+    return out;
   }
 
   // The carriers of a window: in the second pass only those whose runs turn the other way.
@@ -285,12 +409,14 @@ class Optimizer {
     return stretch;
   }
 
-  // The centre of the robot's smallest enclosing circle (its frame), about which it sweeps least.
-  Vec2 spinCentre(size_t robot) {
-    if (spinCentres_.empty())
-      for (const Robot& r : scene_.robots) spinCentres_.push_back(smallestCircle(r.shape).center);
-    return spinCentres_[robot];
+  // The robot's smallest enclosing circle (its frame), about whose centre it sweeps least.
+  const Disc& spinCircle(size_t robot) {
+    if (spinCircles_.empty())
+      for (const Robot& r : scene_.robots) spinCircles_.push_back(smallestCircle(r.shape));
+    return spinCircles_[robot];
   }
+  Vec2 spinCentre(size_t robot) { return spinCircle(robot).center; }
+  double spinRadius(size_t robot) { return spinCircle(robot).radius; }
 
   // The robot's new angle at waypoint `at` (c: its angle coordinate).
   static double rewound(const std::vector<Config>& w, const std::vector<double>& cum,
@@ -532,9 +658,15 @@ class Optimizer {
   static constexpr size_t kSpinCarriers = 64;  // and carriers built for them (each a stretch)
   static constexpr size_t kSpinPlaces = 4;     // and places where the robot could spin, climbed to
   static constexpr double kSpinStep = 0.05;    // radians between a moved turn's waypoints
-  std::vector<Vec2> spinCentres_;
-  std::map<size_t, Vec2> spinPlaces_;         // per segment where a run turned most, in one rewind
-  static constexpr double kMinSaving = 0.05;  // radians of back and forth worth a try
+  std::vector<Disc> spinCircles_;
+  std::map<size_t, Vec2> spinPlaces_;          // per segment where a run turned most, in one rewind
+  static constexpr double kMinSaving = 0.05;   // radians of back and forth worth a try
+  static constexpr double kRouteSaving = 1.0;  // and worth routing the robot anew for
+  static constexpr size_t kRouteWindows = 2;   // windows routed per rewind
+  static constexpr size_t kRoutePlaces = 3;    // places to spin tried per window
+  static constexpr size_t kRouteClimbs = 12;   // climbs to find them
+  HeldRoutes routes_{scene_, 8};               // slices at most, per optimisation
+  bool routing_ = false;                       // whether rewinds may route (the last pass)
   PathCheckSettings quick_;
   std::vector<double> cum_;  // cumulativeCost's, for the path at `cumVersion_`
   size_t version_ = 0, cumVersion_ = size_t(-1);

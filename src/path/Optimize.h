@@ -50,6 +50,7 @@ struct OptimizeStats {
   size_t rounds = 0;       // rounds of shortcuts run
   size_t checked = 0;      // candidate stretches given to the certifier
   size_t evaluations = 0;  // the certifier's evaluations for them (of all robots)
+  size_t slices = 0;       // exact slices built to route a robot that turns the other way
   double seconds = 0;
 };
 

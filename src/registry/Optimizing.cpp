@@ -85,6 +85,7 @@ class Optimizing final : public Planner {
     r.stats.counts.emplace_back("optimize_changes", total.accepted);
     r.stats.counts.emplace_back("optimize_rounds", total.rounds);
     r.stats.counts.emplace_back("optimize_evaluations", total.evaluations);
+    if (total.slices > 0) r.stats.counts.emplace_back("optimize_slices", total.slices);
     return r;
   }
 
@@ -123,6 +124,7 @@ class Optimizing final : public Planner {
     stats.accepted += s.accepted;
     stats.evaluations += s.evaluations;
     stats.rounds += s.rounds;
+    stats.slices += s.slices;
     stats.seconds += watch.seconds();
   }
 

@@ -9,6 +9,7 @@
 #include "mms/Errors.h"
 #include "mms/Planner.h"
 #include "path/Optimize.h"
+#include "scenarios/Generators.h"
 
 using namespace mms;
 
@@ -173,6 +174,28 @@ TEST(Optimize, ATurnBlockedWhereItWasMadeIsMadeTheShortWayWhereTheRobotSpins) {
   double farthest = 0;  // the bar left its end's place to turn
   for (const Config& q : w) farthest = std::max(farthest, std::hypot(q[0] + 1, q[1]));
   EXPECT_GT(farthest, 0.5);
+}
+
+// A sampler's key that went down the slot bit last and turned three quarters in its chamber
+// (keyhole scenes, RRT-Connect as `auto` runs it). The quarter turn the other way needs the key
+// to go down bit first, by another route through the slot (an exact slice at its angle), and
+// to turn about its centre held where the chamber is clearest.
+TEST(Optimize, AKeyThatTurnedTheLongWayIsRoutedToTurnTheShortWay) {
+  for (const uint64_t seed : {114, 116}) {
+    const Scene s = keyholeScene(seed);
+    const PlanResult r =
+        makePlanner("rrtconnect", s,
+                    {1, {{"certified-motions", 1}, {"free-samples", 1}, {"optimize", 0}}})
+            ->solve(Termination(30));
+    ASSERT_TRUE(r.found()) << seed;
+    const double least = minimumRotation(s);
+    ASSERT_GT(rotationOf(r.waypoints, 0), 2.5 * least) << seed;
+    std::vector<Config> w = r.waypoints;
+    const OptimizeStats st = optimize(s, w);
+    EXPECT_GT(st.slices, 0u) << seed;
+    EXPECT_LE(rotationOf(w, 0), 1.05 * least) << seed;
+    EXPECT_TRUE(certified(s, w)) << seed;
+  }
 }
 
 // Rounds of shortcuts end once one stops paying: a path optimised once is given one round

@@ -1,0 +1,47 @@
+#pragma once
+// Routes of one robot held at an angle, through the exact free space at that angle (a slice).
+// The optimiser needs them where a turn made the other way round also changes how the robot
+// travels before and after it: a key that went down a slot bit last and turned three quarters
+// in its chamber turns one quarter only if it goes down bit first, which the path's positions,
+// fitted to the other way round, do not let it (the keyhole scenes).
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "mms/Geometry.h"
+#include "mms/Scene.h"
+#include "mms/Termination.h"
+
+namespace mms {
+
+class Slice;
+class SliceWorld;
+
+class HeldRoutes {
+ public:
+  /// For the one robot of `scene` (a scene of several robots, or with discs, routes nothing);
+  /// at most `maxSlices` slices are built, the rest answer nothing.
+  HeldRoutes(const Scene& scene, size_t maxSlices);
+  ~HeldRoutes();
+  HeldRoutes(const HeldRoutes&) = delete;
+  HeldRoutes& operator=(const HeldRoutes&) = delete;
+
+  /// The reference point's way from `a` to `b` (both included) with the robot at `theta`,
+  /// through the midpoints of a triangulation of the free cell holding both; nothing if they
+  /// lie in different cells, on a boundary, or the slices are spent; nothing too once `stop`
+  /// holds, which ends a slice being built.
+  std::optional<std::vector<Vec2>> route(double theta, Vec2 a, Vec2 b, const Termination& stop);
+  /// Whether any route can be asked for (one robot, no discs).
+  bool routes() const { return maxSlices_ > 0; }
+  size_t slicesBuilt() const { return slices_.size(); }
+
+ private:
+  const Slice* sliceAt(double theta);
+  const Scene& scene_;
+  size_t maxSlices_;
+  std::unique_ptr<SliceWorld> world_;                      // made on first use
+  std::map<double, std::unique_ptr<const Slice>> slices_;  // by the angle asked for; null: failed
+};
+
+}  // namespace mms

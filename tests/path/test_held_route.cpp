@@ -1,0 +1,92 @@
+// Routes of a robot held at an angle through its exact free space: every point and every
+// segment of a route free by the collision checker (sampled densely), none between places the
+// walls part, and a route that needs the angle it was asked at.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/CollisionChecker.h"
+#include "path/HeldRoute.h"
+
+using namespace mms;
+
+namespace {
+
+// A bar (2 x 0.2) in a room split by a wall with a slot 0.4 wide: the bar passes lying across
+// the wall (along x), not along it.
+Scene slotted() {
+  Scene s;
+  s.name = "slotted";
+  s.bounds = {0, 0, 10, 6};
+  s.obstacles = {{{4.8, 0}, {5.2, 0}, {5.2, 2.8}, {4.8, 2.8}},
+                 {{4.8, 3.2}, {5.2, 3.2}, {5.2, 6}, {4.8, 6}}};
+  Robot bar;
+  bar.name = "bar";
+  bar.shape = {{-1, -0.1}, {1, -0.1}, {1, 0.1}, {-1, 0.1}};
+  bar.start = {2, 3, 0};
+  bar.goal = {8, 3, 0};
+  s.robots = {bar};
+  return s;
+}
+
+// Whether the robot at `theta` is free at every point of the route and at 50 points along each
+// of its segments.
+bool freeAlong(const Scene& s, const std::vector<Vec2>& route, double theta) {
+  const CollisionChecker checker(s);
+  for (size_t k = 1; k < route.size(); ++k)
+    for (int i = 0; i <= 50; ++i) {
+      const double t = i / 50.0;
+      const Vec2 p{route[k - 1].x + t * (route[k].x - route[k - 1].x),
+                   route[k - 1].y + t * (route[k].y - route[k - 1].y)};
+      if (!checker.isFree(Config{p.x, p.y, theta})) return false;
+    }
+  return true;
+}
+
+}  // namespace
+
+TEST(HeldRoute, ARouteThroughTheSlotIsFreeAtItsAngle) {
+  const Scene s = slotted();
+  HeldRoutes routes(s, 4);
+  const Termination forever(60);
+  const auto across = routes.route(0, {2, 1}, {8, 5}, forever);
+  ASSERT_TRUE(across.has_value());
+  EXPECT_GE(across->size(), 3u);  // not straight: through the slot
+  EXPECT_DOUBLE_EQ(across->front().x, 2);
+  EXPECT_DOUBLE_EQ(across->back().y, 5);
+  EXPECT_TRUE(freeAlong(s, *across, 0));
+  // Upright the bar cannot pass the slot: the two sides are different cells.
+  EXPECT_FALSE(routes.route(M_PI / 2, {2, 3}, {8, 3}, forever).has_value());
+  // On one side it can go anywhere free upright.
+  const auto upright = routes.route(M_PI / 2, {1, 1.5}, {3.5, 4.5}, forever);
+  ASSERT_TRUE(upright.has_value());
+  EXPECT_TRUE(freeAlong(s, *upright, M_PI / 2));
+  // An angle a whole turn away is the same slice.
+  EXPECT_EQ(routes.slicesBuilt(), 2u);
+  EXPECT_TRUE(routes.route(2 * M_PI, {2, 1}, {8, 5}, forever).has_value());
+  EXPECT_EQ(routes.slicesBuilt(), 2u);
+}
+
+TEST(HeldRoute, NoRouteFromAPlaceTheRobotDoesNotFit) {
+  const Scene s = slotted();
+  HeldRoutes routes(s, 4);
+  const Termination forever(60);
+  EXPECT_FALSE(routes.route(0, {5, 1}, {8, 5}, forever).has_value());    // in the wall
+  EXPECT_FALSE(routes.route(0, {0.5, 3}, {8, 5}, forever).has_value());  // through the bounds
+}
+
+TEST(HeldRoute, SlicesAreBoundedAndAnEndedRunRoutesNothing) {
+  const Scene s = slotted();
+  HeldRoutes routes(s, 1);
+  const Termination forever(60);
+  EXPECT_TRUE(routes.route(0, {2, 1}, {8, 5}, forever).has_value());
+  EXPECT_FALSE(routes.route(M_PI / 2, {1, 1.5}, {3.5, 4.5}, forever).has_value());  // spent
+  HeldRoutes fresh(s, 4);
+  EXPECT_FALSE(fresh.route(0, {2, 1}, {8, 5}, Termination(0)).has_value());
+  // Two robots: nothing is routed (their slices would hold the other robot).
+  Scene two = s;
+  two.robots.push_back(s.robots[0]);
+  two.robots[1].name = "other";
+  two.robots[1].start = two.robots[1].goal = {8, 1, 0};
+  EXPECT_FALSE(HeldRoutes(two, 4).routes());
+}
