@@ -29,7 +29,7 @@ namespace mms {
 
 namespace {
 
-/// The sampler in the race: the fastest of OMPL's planners in open clutter (docs/planner.md).
+/// The sampler beside MMS: the fastest of OMPL's planners in open clutter (docs/planner.md).
 constexpr const char* kSampler = "rrtconnect";
 /// How the sampler runs (`--planner rrtconnect` with these reproduces its paths): motions
 /// certified by clearance, and samples redrawn until clear, so its trees grow into free space.
@@ -56,8 +56,8 @@ void prepareTheProcess() {
   });
 }
 
-/// Keeps the two members of the race on different cores: left to the scheduler a new thread
-/// often shares its creator's core for milliseconds, the whole race on open scenes. MMS's
+/// Keeps the two members on different cores: left to the scheduler a new thread often shares
+/// its creator's core for milliseconds, the whole run on open scenes. MMS's
 /// thread is created with its cores rather than moved there, which would wait for the sampler's
 /// time slice (docs/planner.md, "The default: a portfolio").
 class CoresApart {
@@ -99,7 +99,7 @@ class CoresApart {
   bool pinned_ = false;
 };
 
-/// MMS's side of the race, and the sampler's budget. MMS begins only once the sampler has run
+/// MMS's side of the portfolio, and the sampler's budget. MMS begins only once the sampler has run
 /// for the head start: the sampler tells it of each check of its termination condition (one per
 /// iteration), and the first check past the head start makes MMS and starts it on a thread of
 /// its own. The same checks, counted, end the sampler once its budget is spent; MMS finishing
@@ -109,9 +109,9 @@ class CoresApart {
 /// bends (seeds 1-10, median per scene), and a process with a second thread pays for atomic
 /// reference counts and locked allocation in every shared pointer and malloc of the sampler.
 ///
-/// When the sampler wins, MMS's thread is left to stop on its own: it checks the race's end
+/// When the sampler has its path, MMS's thread is left to stop on its own: it checks its end
 /// between exact steps, and the step it is in took 0.1-2 ms (mean 0.5 ms over 36 open-clutter
-/// and discs-swap races), a sixth of the whole race on open scenes. So that thread reads
+/// and discs-swap runs), a sixth of the whole run on open scenes. So that thread reads
 /// nothing of the caller's after solve() returns: its own cancel flag (the caller's is passed
 /// on while the caller waits), its own clock, and progress reports that stop at the return.
 class Challenger final : public Termination::Watcher {
@@ -281,7 +281,7 @@ class Portfolio : public Planner {
   ~Portfolio() override { finishBackgroundWork(); }
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
-    finishBackgroundWork();  // the last race's MMS, which this one may use again
+    finishBackgroundWork();  // the last run's MMS, which this one may use again
     if (mmsAlone_ || (iterations_ == 0 && makeMms_)) return runMmsAlone(stop, progress);
     const std::unique_ptr<Planner> sampler = makePlanner(kSampler, scene_, samplerParams_);
     if (!makeMms_) return named(sampler->solve(stop, progress), kSampler);
@@ -344,7 +344,8 @@ class Portfolio : public Planner {
   /// A picture of the roadmap asks for MMS's cells and lines (one robot), which a sampler's win
   /// would not have: MMS runs alone.
   bool mmsAlone_;
-  std::unique_ptr<Challenger> running_;  // a lost race's MMS, stopping; declared last: it uses mms_
+  std::unique_ptr<Challenger>
+      running_;  // MMS after the sampler's path, stopping; declared last: it uses mms_
 };
 
 }  // namespace
