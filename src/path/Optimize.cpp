@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "check/PathChecker.h"
@@ -64,10 +65,13 @@ class Optimizer {
   }
 
  private:
-  // Rounds of shortcuts until one stops paying: the first rounds take most of what there is,
-  // and on an easy scene the rest would cost more than the planning did.
+  // Rounds of shortcuts until they stop paying: the first rounds take most of what there is,
+  // and on an easy scene the rest would cost more than the planning did. Short rounds end the
+  // work soon after it stops paying; two weak rounds in a row, not one, because a short round
+  // on a tight path often takes nothing by chance while the next takes much.
   void shortcutRounds(std::vector<Config>& w) {
     double cost = pathCost(checker_, w);
+    size_t weak = 0;
     for (size_t round = 0; round < settings_.rounds && !done(); ++round) {
       const size_t before = s_.accepted;
       for (size_t a = 0; a < settings_.attempts && !done() && w.size() >= 2; ++a)
@@ -77,7 +81,9 @@ class Optimizer {
       if (s_.accepted > before) turnShortWay(w);  // shortcuts may have joined turns
       const double now = pathCost(checker_, w);
       ++s_.rounds;
-      if (s_.accepted == before || cost - now < settings_.minGain * cost) break;
+      const bool paid = s_.accepted > before && cost - now >= settings_.minGain * cost;
+      weak = paid ? 0 : weak + 1;
+      if (weak == kWeakRounds) break;
       cost = now;
     }
   }
@@ -94,15 +100,35 @@ class Optimizer {
   }
 
   // Most candidates cut through an obstacle, and the certifier, which advances from the start,
-  // takes some fifty evaluations to reach it: a pose in the middle of each segment, tested
-  // first, refuses them at one (the certifier would refuse them too, at that pose).
+  // takes fifty evaluations and more to reach it: poses along each segment, tested first coarse
+  // to fine, refuse most of them at a few (the certifier would refuse them too, at that pose).
   bool certified(const std::vector<Config>& stretch) {
     ++s_.checked;
-    for (size_t k = 1; k < stretch.size(); ++k) {
-      s_.evaluations += 1;
-      if (!checker_.isFree(lerp(stretch[k - 1], stretch[k], 0.5))) return false;
+    return probedFree(stretch) && check(stretch).ok;
+  }
+
+  // Poses at 1/2 of every segment, then 1/4 and 3/4, and so on: halving the spacing each level
+  // while it is longer (in cost, how far the robots' points move) than half the smallest robot's
+  // radius, up to kProbeLevels levels (7 poses a segment).
+  bool probedFree(const std::vector<Config>& stretch) {
+    probeCost_.clear();
+    for (size_t k = 1; k < stretch.size(); ++k)
+      probeCost_.push_back(segmentCost(checker_, stretch[k - 1], stretch[k]));
+    for (size_t level = 1; level <= kProbeLevels; ++level) {
+      const size_t parts = size_t(1) << level;
+      bool finer = false;
+      for (size_t k = 1; k < stretch.size(); ++k) {
+        if (level > 1 && 2 * probeCost_[k - 1] < double(parts) * probeSpacing_) continue;
+        finer = true;
+        for (size_t j = 1; j < parts; j += 2) {
+          s_.evaluations += 1;
+          if (!checker_.isFree(lerp(stretch[k - 1], stretch[k], double(j) / double(parts))))
+            return false;
+        }
+      }
+      if (!finer) break;
     }
-    return check(stretch).ok;
+    return true;
   }
 
   // A stretch in which a robot turns more than half a circle in all, turned the other way
@@ -653,6 +679,20 @@ class Optimizer {
   const OptimizeSettings& settings_;
   const Termination& stop_;
   OptimizeStats& s_;
+  static constexpr size_t kProbeLevels = 3;  // of poses tested before a candidate is certified
+  std::vector<double> probeCost_;            // probedFree's, per segment
+  // Robots that are all discs are certified at once per segment (a swept stadium): the middle
+  // pose alone, as a probe, then costs less than more of them.
+  double probeSpacing_ = [this] {
+    double r = std::numeric_limits<double>::infinity();
+    bool discs = true;
+    for (size_t i = 0; i < scene_.robots.size(); ++i) {
+      r = std::min(r, checker_.radius(i));
+      discs = discs && checker_.disc(i) > 0;
+    }
+    return discs ? std::numeric_limits<double>::infinity() : 0.5 * r;
+  }();
+  static constexpr size_t kWeakRounds = 2;     // rounds in a row that do not pay, to stop
   static constexpr size_t kRewindTries = 32;   // certifications per robot and change
   static constexpr size_t kSpinTries = 24;     // the same, for turns moved to spin in place
   static constexpr size_t kSpinCarriers = 64;  // and carriers built for them (each a stretch)

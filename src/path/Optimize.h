@@ -16,8 +16,8 @@
 // The objective "clearance" then moves waypoints away from contacts while the path stays
 // certified and no segment's smallest clearance falls.
 //
-// Rounds of shortcuts end once one stops paying. Bounded by attempts (a seed fixes the result)
-// and by `stop` (the planner's time limit).
+// Rounds of shortcuts end once two in a row stop paying. Bounded by attempts (a seed fixes the
+// result) and by `stop` (the planner's time limit).
 #include <cstddef>
 #include <vector>
 
@@ -32,10 +32,11 @@ enum class PathObjective { Length, Clearance };
 
 struct OptimizeSettings {
   PathObjective objective = PathObjective::Length;
-  size_t attempts = 400;  // shortcut attempts, full and partial, per round
-  size_t rounds = 4;
-  /// Rounds end once one shortens the path by less than this share of its cost.
-  double minGain = 0.01;
+  size_t attempts = 100;  // shortcut attempts, full and partial, per round
+  size_t rounds = 16;
+  /// Rounds end once two in a row each shorten the path by less than this share of its cost
+  /// (or take nothing).
+  double minGain = 0.0025;
   size_t clearanceAttempts = 0;  // waypoint moves for the clearance objective (0: 50 per waypoint)
   /// The certifier's work over all candidates, in clearances of one robot (an evaluation of k
   /// robots counts k + k(k-1)/2: each robot, each pair), so that a seed fixes the result and k

@@ -189,8 +189,8 @@ PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
                        0,
                        1,
                        defaults.minGain,
-                       "With --optimize: rounds end once one shortens the path by less than "
-                       "this share (0: every round runs) (default " +
+                       "With --optimize: rounds end once two in a row each shorten the path by "
+                       "less than this share (0: every round runs) (default " +
                            formatNumber(defaults.minGain) + ")"};
   info.params.push_back(optimize);
   info.params.push_back(objective);

@@ -14,6 +14,11 @@ namespace mms {
 /// terabytes of address space up front. Returns false if the system refused the cap.
 bool limitMemory(double megabytes);
 
+/// The cap alone, for a child process about to exec another program: what limitMemory
+/// prepares besides (allocator hooks, a grown stack, thread arenas) would die with the exec
+/// and cost the child's run its time. Returns false if the system refused the cap.
+bool capAddressSpace(double megabytes);
+
 /// Whether `e` says the system had no memory for a request (a thread's stack, a mapping).
 bool outOfMemory(const std::system_error& e);
 
