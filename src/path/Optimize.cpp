@@ -502,8 +502,8 @@ class Optimizer {
 
   // One attempt: two random points of the path, joined straight (all of every robot when
   // not `partial`) or in one robot's translation, rotation or both. Only a candidate that is
-  // shorter is built and certified, and only the stretch it replaces: an attempt costs what
-  // its stretch does, not a copy of the path.
+  // shorter (by settings.minStep of the path) is built and certified, and only the stretch it
+  // replaces: an attempt costs what its stretch does, not a copy of the path.
   void shortcut(std::vector<Config>& w, bool partial) {
     const std::vector<double>& cum = cumulativeCost(w);
     const double total = cum.back();
@@ -524,7 +524,7 @@ class Optimizer {
     if (!partial) {
       for (size_t r = 0; r < scene_.robots.size(); ++r) aimEnd(w, st, r);
       const double newCost = segmentCost(checker_, st.from.q, st.aimed);
-      if (newCost >= st.oldCost - 1e-12 * total) return;
+      if (newCost >= st.oldCost - settings_.minStep * total) return;
       if (!certified({st.from.q, st.aimed})) return;
       w.erase(w.begin() + long(st.begin), w.begin() + long(st.end));
     } else if (!partialShortcut(w, st, total)) {
@@ -588,7 +588,8 @@ class Optimizer {
     }
     before.push_back(poseOf(st.to.q, robot));
     after.push_back(b);
-    if (robotCost(after, robot) >= robotCost(before, robot) - 1e-12 * total) return false;
+    if (robotCost(after, robot) >= robotCost(before, robot) - settings_.minStep * total)
+      return false;
     std::vector<Config> stretch{st.from.q};
     stretch.reserve(st.end - st.begin + 2);
     for (size_t k = st.begin; k < st.end; ++k) {

@@ -37,6 +37,10 @@ struct OptimizeSettings {
   /// Rounds end once two in a row each shorten the path by less than this share of its cost
   /// (or take nothing).
   double minGain = 0.0025;
+  /// A candidate is certified only when it would shorten the path by this share of its cost:
+  /// smaller steps cost a certification each and add up to little (on tuning scenes of ten
+  /// families, 0.05 % halved the optimiser's time for paths 0.2 % longer).
+  double minStep = 0.0005;
   size_t clearanceAttempts = 0;  // waypoint moves for the clearance objective (0: 50 per waypoint)
   /// The certifier's work over all candidates, in clearances of one robot (an evaluation of k
   /// robots counts k + k(k-1)/2: each robot, each pair), so that a seed fixes the result and k
