@@ -11,7 +11,8 @@
 # translating only, e.g. niche-three:oncoming), PLANNERS (default: the six above).
 # It writes OUTPUT_DIR/summary.md: per family and planner, the median over seeds (a failure
 # counts as the limit) and the seeds solved, and the ratios of the best OMPL planner's median to
-# auto's and to MMS's (above 1: ours is faster). The OMPL planners use their whole limit on the
+# auto's and to MMS's (above 1: ours is faster); summary-whole-command.md the same for the whole
+# `mms plan` command (with JOBS=1 each run has the machine to itself). The OMPL planners use their whole limit on the
 # tight families: about 25 min for the fresh set at the default limit. It resumes where it stopped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -53,5 +54,9 @@ done
 build/mms bench "${scenes[@]}" --planners "$planners" --runs 1 --time-limit "$limit" \
   --jobs "$jobs" -o "$out/bench"
 python3 scripts/generalization-summary.py "$out/bench/results.csv" "$limit" > "$out/summary.md"
-{ echo; echo "Seeds: $set_name ($(echo $seeds | awk '{print $1"-"$NF}')), limit $limit s, $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"; } >> "$out/summary.md"
+python3 scripts/generalization-summary.py "$out/bench/results.csv" "$limit" wall_seconds \
+  > "$out/summary-whole-command.md"
+for f in summary summary-whole-command; do
+  { echo; echo "Seeds: $set_name ($(echo $seeds | awk '{print $1"-"$NF}')), limit $limit s, $jobs job(s) on $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"; } >> "$out/$f.md"
+done
 cat "$out/summary.md"

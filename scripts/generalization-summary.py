@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
 """The generalization suite's table from an `mms bench` results.csv (one run per scene).
 
-Usage: generalization-summary.py RESULTS_CSV TIME_LIMIT
+Usage: generalization-summary.py RESULTS_CSV TIME_LIMIT [seconds|wall_seconds]
+
+The time is the planner's time to its first certified path (`seconds`, the default), or the
+whole command as a user waits for it (`wall_seconds`: process, scene, planning, the optimiser,
+the path file).
 
 Scenes are grouped into families by their name without the trailing "-SEED". Per family and
 planner: the median time over the family's seeds (a failure counts as the limit, so a median
@@ -21,13 +25,14 @@ OURS = ("auto", "mms")
 
 def main():
     path, limit = sys.argv[1], float(sys.argv[2])
+    column = sys.argv[3] if len(sys.argv) > 3 else "seconds"
     times = defaultdict(dict)  # (family, planner) -> {seed scene: seconds}
     solved_by = defaultdict(lambda: defaultdict(int))
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
             family = re.sub(r"-\d+$", "", row["scene"])
             ok = row["status"] == "found"
-            seconds = float(row["seconds"]) if ok else limit
+            seconds = float(row[column]) if ok else limit
             times[(family, row["planner"])][row["scene"]] = min(seconds, limit)
             if ok and row.get("solved_by"):
                 solved_by[family][row["solved_by"]] += 1
