@@ -235,14 +235,21 @@ class Optimizer {
               spin ? spunStretch(w, stretch, runs, moved, mirror, from, robot) : stretch;
           if (spin && pathCost(checker_, candidate) >= cum[to] - cum[from]) continue;
           if (!certified(candidate)) continue;
-          for (size_t k = to + 1; k < w.size(); ++k) w[k][c] += 2 * M_PI * r.turns;
-          w.erase(w.begin() + long(from), w.begin() + long(to) + 1);
-          w.insert(w.begin() + long(from), candidate.begin(), candidate.end());
+          takeWindow(w, from, to, candidate, c, r.turns);
           return true;
         }
       }
     }
     return false;
+  }
+
+  // Waypoints from..to replaced by a window turned the other way round: the rest of the path
+  // is the same motion, its angle (coordinate c) shifted by the full turns the window undid.
+  static void takeWindow(std::vector<Config>& w, size_t from, size_t to,
+                         const std::vector<Config>& window, size_t c, double turns) {
+    for (size_t k = to + 1; k < w.size(); ++k) w[k][c] += 2 * M_PI * turns;
+    w.erase(w.begin() + long(from), w.begin() + long(to) + 1);
+    w.insert(w.begin() + long(from), window.begin(), window.end());
   }
 
   // A third pass, for the windows that save the most: the window's net turn made about the
@@ -268,9 +275,7 @@ class Optimizer {
         if (candidate.empty() || pathCost(checker_, candidate) >= cum[to] - cum[from] ||
             !certified(candidate))
           continue;
-        for (size_t k = to + 1; k < w.size(); ++k) w[k][c] += 2 * M_PI * r.turns;
-        w.erase(w.begin() + long(from), w.begin() + long(to) + 1);
-        w.insert(w.begin() + long(from), candidate.begin(), candidate.end());
+        takeWindow(w, from, to, candidate, c, r.turns);
         return true;
       }
     }
@@ -296,6 +301,13 @@ class Optimizer {
            poseCost(checker_, robot, e.b, e.last);
   }
 
+  // The clearest place climbed to from the robot's spinning centre halfway along segment k.
+  Vec2 clearPlaceNear(const std::vector<Config>& w, size_t k, size_t robot) {
+    const double radius = checker_.radius(robot);
+    const Vec2 centre = Transform(poseOf(lerp(w[k], w[k + 1], 0.5), robot))(spinCentre(robot));
+    return clearestNear(scene_, centre, 0.25 * radius, 2 * radius);
+  }
+
   // Distinct clear places climbed to from the segments of w[from..to] that turn most.
   std::vector<Vec2> placesToSpin(const std::vector<Config>& w, size_t from, size_t to,
                                  size_t robot) {
@@ -307,13 +319,10 @@ class Optimizer {
       return std::fabs(w[a + 1][c] - w[a][c]) > std::fabs(w[b + 1][c] - w[b][c]);
     });
     const double radius = checker_.radius(robot);
-    const Vec2 centre = spinCentre(robot);
     std::vector<Vec2> places;
     for (size_t i = 0; i < segments.size() && places.size() < kRoutePlaces && i < kRouteClimbs;
          ++i) {
-      const size_t k = segments[i];
-      const Vec2 p = Transform(poseOf(lerp(w[k], w[k + 1], 0.5), robot))(centre);
-      const Vec2 at = clearestNear(scene_, p, 0.25 * radius, 2 * radius);
+      const Vec2 at = clearPlaceNear(w, segments[i], robot);
       // Where the robot cannot spin whole, a quarter's sweep may still fit, but the routes
       // would cost two slices on the chance: the bends' and doors' places are too small.
       if (wallDistance(scene_, at) < spinRadius(robot)) continue;
@@ -399,11 +408,7 @@ class Optimizer {
       for (size_t k = first; k < last; ++k)
         if (std::fabs(w[k + 1][c] - w[k][c]) > std::fabs(w[most + 1][c] - w[most][c])) most = k;
       auto [place, fresh] = spinPlaces_.try_emplace(most);
-      if (fresh) {
-        const double radius = checker_.radius(robot);
-        place->second = clearestNear(scene_, centreAt(lerp(w[most], w[most + 1], 0.5)),
-                                     0.25 * radius, 2 * radius);
-      }
+      if (fresh) place->second = clearPlaceNear(w, most, robot);
       const Vec2 at = place->second;
       const double room = wallDistance(scene_, at);
       auto inside = [&](size_t k) {
