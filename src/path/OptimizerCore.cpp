@@ -1,0 +1,92 @@
+#include "path/OptimizerCore.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mms::detail {
+
+// One robot's cost from pose a to pose b.
+double poseCost(const CollisionChecker& checker, size_t robot, const Pose& a, const Pose& b) {
+  return std::hypot(b.x - a.x, b.y - a.y) + checker.radius(robot) * std::fabs(b.theta - a.theta);
+}
+
+double segmentCost(const CollisionChecker& checker, const Config& a, const Config& b) {
+  double c = 0;
+  for (size_t i = 0; 3 * i < a.size(); ++i) {
+    const Pose p = poseOf(a, i), q = poseOf(b, i);
+    // Robots that stay put add exactly 0: among hundreds moved one at a time most do, and
+    // hypot is a call into libm.
+    if (p.x == q.x && p.y == q.y && p.theta == q.theta) continue;
+    c += poseCost(checker, i, p, q);
+  }
+  return c;
+}
+
+OptimizerCore::OptimizerCore(const Scene& scene, const CollisionChecker& checker, Random& rng,
+                             const OptimizeSettings& settings, const Termination& stop,
+                             OptimizeStats& stats)
+    : scene_(scene), checker_(checker), rng_(rng), settings_(settings), stop_(stop), s_(stats) {
+  // A candidate stretch is short; one that needs more evaluations slides along contacts and
+  // is not worth the time.
+  quick_.maxEvaluations = settings.candidateEvaluations;
+  // Robots that are all discs are certified at once per segment (a swept stadium): the middle
+  // pose alone, as a probe, then costs less than more of them.
+  double r = std::numeric_limits<double>::infinity();
+  bool discs = true;
+  for (size_t i = 0; i < scene_.robots.size(); ++i) {
+    r = std::min(r, checker_.radius(i));
+    discs = discs && checker_.disc(i) > 0;
+  }
+  probeSpacing_ = discs ? std::numeric_limits<double>::infinity() : 0.5 * r;
+}
+
+PathCheckResult OptimizerCore::check(const std::vector<Config>& stretch) {
+  const PathCheckResult r = checkMotion(scene_, checker_, stretch, quick_);
+  s_.evaluations += r.evaluations;
+  return r;
+}
+
+// Most candidates cut through an obstacle, and the certifier, which advances from the start,
+// takes fifty evaluations and more to reach it: poses along each segment, tested first coarse
+// to fine, refuse most of them at a few (the certifier would refuse them too, at that pose).
+bool OptimizerCore::certified(const std::vector<Config>& stretch) {
+  ++s_.checked;
+  return probedFree(stretch) && check(stretch).ok;
+}
+
+// Poses at 1/2 of every segment, then 1/4 and 3/4, and so on: halving the spacing each level
+// while it is longer (in cost, how far the robots' points move) than half the smallest robot's
+// radius, up to kProbeLevels levels (7 poses a segment).
+bool OptimizerCore::probedFree(const std::vector<Config>& stretch) {
+  probeCost_.clear();
+  for (size_t k = 1; k < stretch.size(); ++k)
+    probeCost_.push_back(segmentCost(checker_, stretch[k - 1], stretch[k]));
+  for (size_t level = 1; level <= kProbeLevels; ++level) {
+    const size_t parts = size_t(1) << level;
+    bool finer = false;
+    for (size_t k = 1; k < stretch.size(); ++k) {
+      if (level > 1 && 2 * probeCost_[k - 1] < double(parts) * probeSpacing_) continue;
+      finer = true;
+      for (size_t j = 1; j < parts; j += 2) {
+        s_.evaluations += 1;
+        if (!checker_.isFree(lerp(stretch[k - 1], stretch[k], double(j) / double(parts))))
+          return false;
+      }
+    }
+    if (!finer) break;
+  }
+  return true;
+}
+
+// The cost of the path up to each waypoint, kept until the path changes (`changed`): with
+// hundreds of robots and a waypoint per move it costs as much as a copy of the path.
+const std::vector<double>& OptimizerCore::cumulativeCost(const std::vector<Config>& w) {
+  if (cumVersion_ == version_ && cum_.size() == w.size()) return cum_;
+  cum_.assign(1, 0.0);
+  for (size_t k = 1; k < w.size(); ++k)
+    cum_.push_back(cum_.back() + segmentCost(checker_, w[k - 1], w[k]));
+  cumVersion_ = version_;
+  return cum_;
+}
+
+}  // namespace mms::detail
