@@ -152,6 +152,24 @@ TEST(Portfolio, ARoadmapPictureIsMmsAlone) {
   EXPECT_NE(test::readFile(svg).find("id=\"cells\""), std::string::npos);
 }
 
+// A budget of 0 runs MMS alone: on a bend, which the sampler takes at the default budget, the
+// path is MMS's, the one `--planner mms` gives with the same seed.
+TEST(Portfolio, ABudgetOfZeroIsMmsAlone) {
+  test::TempDir dir;
+  const std::string scene = dir.path("bend.json"), zero = dir.path("zero.json"),
+                    byDefault = dir.path("default.json"), mms = dir.path("mms.json");
+  ASSERT_EQ(runMms("scenario bend --seed 1 -o " + quote(scene)).code, 0);
+  const std::string plan = "plan " + quote(scene) + " -q --seed 2 --time-limit 60 -o ";
+  ASSERT_EQ(runMms(plan + quote(byDefault)).code, 0);
+  EXPECT_EQ(readJson(byDefault)["statistics"]["solved_by"], "rrtconnect");
+  const test::Outcome r = runMms(plan + quote(zero) + " --sampler-iterations 0");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("auto (mms) found a path"), std::string::npos) << r.out;
+  EXPECT_EQ(readJson(zero)["statistics"]["solved_by"], "mms");
+  ASSERT_EQ(runMms(plan + quote(mms) + " --planner mms").code, 0);
+  EXPECT_EQ(readJson(zero)["waypoints"], readJson(mms)["waypoints"]);
+}
+
 // Where the sampler wins after MMS has started, solve() returns without waiting for MMS to
 // stop. Nothing of the caller's may be used after that: the cancel flag is freed as soon as
 // solve() returns (AddressSanitizer reports a later read), and progress reports after the
