@@ -12,8 +12,9 @@
 # It writes OUTPUT_DIR/summary.md: per family and planner, the median over seeds (a failure
 # counts as the limit) and the seeds solved, and the ratios of the best OMPL planner's median to
 # auto's and to MMS's (above 1: ours is faster); summary-whole-command.md the same for the whole
-# `mms plan` command (with JOBS=1 each run has the machine to itself). The OMPL planners use their whole limit on the
-# tight families: about 25 min for the fresh set at the default limit. It resumes where it stopped.
+# `mms plan` command (with JOBS=1 each run has the machine to itself). The OMPL planners use
+# their whole limit on the tight families: about 25 min for the fresh set at the default limit.
+# It resumes where it stopped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 set_name=${1:-}

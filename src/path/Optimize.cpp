@@ -47,7 +47,8 @@ class Optimizer final : detail::ShortWay {
   // work soon after it stops paying; two weak rounds in a row, not one, because a short round
   // on a tight path often takes nothing by chance while the next takes much.
   void shortcutRounds(std::vector<Config>& w) {
-    double cost = pathCost(checker_, w);
+    // The cumulative cost, which the next attempt reads too, instead of pathCost again.
+    double cost = cumulativeCost(w).back();
     size_t weak = 0;
     for (size_t round = 0; round < settings_.rounds && !done(); ++round) {
       const size_t before = s_.accepted;
@@ -56,7 +57,7 @@ class Optimizer final : detail::ShortWay {
       dropStraightWaypoints(w);
       changed();
       if (s_.accepted > before) turnShortWay(w);  // shortcuts may have joined turns
-      const double now = pathCost(checker_, w);
+      const double now = cumulativeCost(w).back();
       ++s_.rounds;
       const bool paid = s_.accepted > before && cost - now >= settings_.minGain * cost;
       weak = paid ? 0 : weak + 1;

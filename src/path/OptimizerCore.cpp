@@ -37,7 +37,8 @@ OptimizerCore::OptimizerCore(const Scene& scene, const CollisionChecker& checker
     r = std::min(r, checker_.radius(i));
     discs = discs && checker_.disc(i) > 0;
   }
-  probeSpacing_ = discs ? std::numeric_limits<double>::infinity() : 0.5 * r;
+  probeLevels_ = discs ? 1 : kProbeLevels;
+  probeSpacing_ = 0.5 * r;
 }
 
 PathCheckResult OptimizerCore::check(const std::vector<Config>& stretch) {
@@ -56,13 +57,15 @@ bool OptimizerCore::certified(const std::vector<Config>& stretch) {
 
 // Poses at 1/2 of every segment, then 1/4 and 3/4, and so on: halving the spacing each level
 // while it is longer (in cost, how far the robots' points move) than half the smallest robot's
-// radius, up to kProbeLevels levels (7 poses a segment).
+// radius, up to kProbeLevels levels (7 poses a segment; the middle alone for discs).
 bool OptimizerCore::probedFree(const std::vector<Config>& stretch) {
-  probeCost_.clear();
-  for (size_t k = 1; k < stretch.size(); ++k)
-    probeCost_.push_back(segmentCost(checker_, stretch[k - 1], stretch[k]));
-  for (size_t level = 1; level <= kProbeLevels; ++level) {
+  for (size_t level = 1; level <= probeLevels_; ++level) {
     const size_t parts = size_t(1) << level;
+    if (level == 2) {  // the segments' costs, once finer poses may be tested
+      probeCost_.clear();
+      for (size_t k = 1; k < stretch.size(); ++k)
+        probeCost_.push_back(segmentCost(checker_, stretch[k - 1], stretch[k]));
+    }
     bool finer = false;
     for (size_t k = 1; k < stretch.size(); ++k) {
       if (level > 1 && 2 * probeCost_[k - 1] < double(parts) * probeSpacing_) continue;

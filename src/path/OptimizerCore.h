@@ -44,8 +44,9 @@ class OptimizerCore {
   bool probedFree(const std::vector<Config>& stretch);
 
   static constexpr size_t kProbeLevels = 3;  // of poses tested before a candidate is certified
-  std::vector<double> probeCost_;            // probedFree's, per segment
-  double probeSpacing_;
+  size_t probeLevels_ = kProbeLevels;
+  std::vector<double> probeCost_;  // probedFree's, per segment
+  double probeSpacing_ = 0;
   PathCheckSettings quick_;
   std::vector<double> cum_;  // cumulativeCost's, for the path at `cumVersion_`
   size_t version_ = 0, cumVersion_ = size_t(-1);

@@ -344,8 +344,8 @@ class Portfolio : public Planner {
   /// A picture of the roadmap asks for MMS's cells and lines (one robot), which a sampler's win
   /// would not have: MMS runs alone.
   bool mmsAlone_;
-  std::unique_ptr<Challenger>
-      running_;  // MMS after the sampler's path, stopping; declared last: it uses mms_
+  // MMS after the sampler's path, stopping; declared last: it uses mms_.
+  std::unique_ptr<Challenger> running_;
 };
 
 }  // namespace
