@@ -1,6 +1,7 @@
 #include "geometry/CollisionChecker.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -45,8 +46,15 @@ ShrunkShape shrinkForContacts(const Ring& shape, double tolerance) {
   return {std::move(r.ring), std::nullopt};
 }
 
+namespace {
+std::atomic<uint64_t> nextShapesId{1};
+}  // namespace
+
 CollisionChecker::CollisionChecker(const Scene& scene)
-    : bounds_(scene.bounds), tolerance_(scene.tolerance()), obstacles_(scene.obstacles) {
+    : bounds_(scene.bounds),
+      tolerance_(scene.tolerance()),
+      obstacles_(scene.obstacles),
+      shapesId_(nextShapesId.fetch_add(1, std::memory_order_relaxed)) {
   for (size_t i = 0; i < obstacles_.size(); ++i) {
     const Disc* d = scene.obstacleDisc(i);
     obstacleDiscs_.push_back(d ? *d : Disc{});
@@ -74,16 +82,28 @@ CollisionChecker::CollisionChecker(const Scene& scene)
 }
 
 namespace {
-// Scratch buffers for placed shapes: the checker is const and called from planner threads,
-// and the hot path must not allocate.
-thread_local Ring placedA, placedB;
-
 // A placed robot or an obstacle: a ring or an exact disc, with its box.
 struct Placed {
   const Ring* ring = nullptr;  // null for a disc
   Disc disc;
   Box box;
 };
+
+// Each robot's last placement, per thread (the checker is const and called from planner
+// threads; the hot path must not allocate), for the checker whose shapes it holds.
+struct PlacedRobot {
+  Pose pose;
+  bool valid = false;
+  Ring ring;
+  Placed placed;
+};
+struct PlacementCache {
+  uint64_t shapes = 0;
+  std::vector<PlacedRobot> robots;
+};
+// Two checkers, for planners that test a part of the scene and the whole in turn.
+thread_local PlacementCache placements[2];
+thread_local size_t lastPlacements = 0;
 
 // Whether a disc's interior meets a closed polygon (touching discs are free: the robots were
 // shrunk by the tolerance, so a disc contact is never closer than that to a real overlap).
@@ -127,14 +147,49 @@ Placed asPlaced(const Ring& ring, const Disc& disc, const Box& box) {
   return disc.radius > 0 ? Placed{nullptr, disc, box} : Placed{&ring, {}, box};
 }
 
-Placed placeRobot(const CollisionChecker& checker, double disc, size_t robot, const Pose& pose,
-                  Ring& buffer) {
-  if (disc > 0) {
-    const Disc d{{pose.x, pose.y}, disc};
-    return {nullptr, d, discBox(d)};
+// The ring placed, and its box, in one pass over the vertices.
+void placeRing(const Ring& shape, const Pose& pose, Ring& out, Box& box) {
+  const Transform t(pose);
+  out.resize(shape.size());
+  box = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+         -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (size_t i = 0; i < shape.size(); ++i) {
+    const Vec2 v = t(shape[i]);
+    out[i] = v;
+    box.xmin = std::min(box.xmin, v.x);
+    box.ymin = std::min(box.ymin, v.y);
+    box.xmax = std::max(box.xmax, v.x);
+    box.ymax = std::max(box.ymax, v.y);
   }
-  transformRing(checker.shrunkShape(robot), pose, buffer);
-  return {&buffer, {}, boundingBox(buffer)};
+}
+
+// Robot `robot` of the checker with shapes `shapes` placed at `pose`: its last placement when
+// the pose is the same (the reference stays valid until the next call for another checker).
+const Placed& placeRobot(const CollisionChecker& checker, uint64_t shapes, size_t robot,
+                         const Pose& pose) {
+  PlacementCache* cache = &placements[lastPlacements];
+  if (cache->shapes != shapes) {
+    lastPlacements ^= 1;
+    cache = &placements[lastPlacements];
+    if (cache->shapes != shapes) {
+      cache->shapes = shapes;
+      cache->robots.resize(std::max(cache->robots.size(), checker.robotCount()));
+      for (PlacedRobot& r : cache->robots) r.valid = false;
+    }
+  }
+  PlacedRobot& r = cache->robots[robot];
+  if (r.valid && r.pose.x == pose.x && r.pose.y == pose.y && r.pose.theta == pose.theta)
+    return r.placed;
+  r.pose = pose;
+  r.valid = true;
+  if (const double disc = checker.disc(robot); disc > 0) {
+    const Disc d{{pose.x, pose.y}, disc};
+    r.placed = {nullptr, d, discBox(d)};
+  } else {
+    r.placed.ring = &r.ring;
+    placeRing(checker.shrunkShape(robot), pose, r.ring, r.placed.box);
+  }
+  return r.placed;
 }
 
 // Distance between the segment ab and a closed polygon (0 when they meet).
@@ -148,7 +203,7 @@ double segmentRingDistance(Vec2 a, Vec2 b, const Ring& ring, double bound) {
 }  // namespace
 
 Contact CollisionChecker::robotContact(size_t robot, const Pose& pose) const {
-  const Placed a = placeRobot(*this, discs_[robot], robot, pose, placedA);
+  const Placed& a = placeRobot(*this, shapesId_, robot, pose);
   // The bounds are convex, so the robot is inside them when its box is.
   if (!bounds_.contains(a.box)) return {Contact::Kind::Bounds, 0};
   for (size_t i = 0; i < obstacles_.size(); ++i)
@@ -162,8 +217,7 @@ bool CollisionChecker::robotFree(size_t robot, const Pose& pose) const {
 }
 
 bool CollisionChecker::robotsDisjoint(size_t a, const Pose& pa, size_t b, const Pose& pb) const {
-  return !overlap(placeRobot(*this, discs_[a], a, pa, placedA),
-                  placeRobot(*this, discs_[b], b, pb, placedB));
+  return !overlap(placeRobot(*this, shapesId_, a, pa), placeRobot(*this, shapesId_, b, pb));
 }
 
 std::optional<std::pair<size_t, Contact>> CollisionChecker::firstContact(const Config& q) const {
@@ -195,7 +249,7 @@ bool CollisionChecker::isFree(const Config& q) const { return !firstContact(q).h
 
 CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const Pose& pose,
                                                              double bound) const {
-  const Placed a = placeRobot(*this, discs_[robot], robot, pose, placedA);
+  const Placed& a = placeRobot(*this, shapesId_, robot, pose);
   Clearance c{bound, {Contact::Kind::Bounds, 0}};
   if (a.ring)
     for (Vec2 v : *a.ring) c.distance = std::min(c.distance, boundsGap(bounds_, v, 0));
@@ -211,8 +265,7 @@ CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const
 
 double CollisionChecker::robotsDistance(size_t a, const Pose& pa, size_t b, const Pose& pb,
                                         double bound) const {
-  return gap(placeRobot(*this, discs_[a], a, pa, placedA),
-             placeRobot(*this, discs_[b], b, pb, placedB), bound);
+  return gap(placeRobot(*this, shapesId_, a, pa), placeRobot(*this, shapesId_, b, pb), bound);
 }
 
 CollisionChecker::Clearance CollisionChecker::sweptDiscClearance(size_t robot, Vec2 a, Vec2 b,
@@ -237,10 +290,10 @@ double CollisionChecker::sweptDiscDistance(size_t i, Vec2 ai, Vec2 bi, size_t j,
                                            const Pose& pj) const {
   if (discs_[j] > 0)
     return std::max(0.0, pointSegmentDistance({0, 0}, ai - aj, bi - bj) - discs_[i] - discs_[j]);
-  transformRing(shapes_[j], pj, placedB);
+  const Placed& held = placeRobot(*this, shapesId_, j, pj);
   return std::max(
       0.0,
-      segmentRingDistance(ai, bi, placedB, std::numeric_limits<double>::infinity()) - discs_[i]);
+      segmentRingDistance(ai, bi, *held.ring, std::numeric_limits<double>::infinity()) - discs_[i]);
 }
 
 }  // namespace mms

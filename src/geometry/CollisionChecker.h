@@ -12,6 +12,7 @@
 // stand-ins: a disc robot is shrunk by delta as well, and a disc contact is found by its
 // centre's distance (a floating-point test is exact enough here: delta is the margin).
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -100,6 +101,10 @@ class CollisionChecker {
   std::vector<Ring> shapes_;
   std::vector<double> radii_;
   std::vector<double> discs_;
+  // Names this checker's shapes for the per-thread cache of placed robots (one per robot, its
+  // last pose): an evaluation tests each robot against the obstacles and then in every pair,
+  // and held robots keep their pose from one evaluation to the next.
+  uint64_t shapesId_;
 };
 
 }  // namespace mms

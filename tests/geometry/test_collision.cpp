@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "Support.h"
 #include "geometry/CollisionChecker.h"
@@ -181,6 +183,30 @@ TEST(CollisionChecker, RobotsDistanceIsTheNearestEdgePairOrTheBound) {
   }
   EXPECT_GT(apart, 1000);
   EXPECT_GT(bounded, 500);
+}
+
+// Each thread keeps robots' last placements for the checkers it used last: checkers of
+// different shapes in turn (more than it keeps), the same pose again, and a new checker in the
+// place of a destroyed one must each see their own shapes.
+TEST(CollisionChecker, CheckersInTurnEachPlaceTheirOwnShapes) {
+  Random rng(31);
+  std::vector<Scene> scenes;
+  for (int k = 0; k < 3; ++k) scenes.push_back(twoStarRobots(rng));
+  std::vector<CollisionChecker> checkers(scenes.begin(), scenes.end());
+  std::optional<CollisionChecker> reused;
+  for (int i = 0; i < 600; ++i) {
+    const Pose p{rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-M_PI, M_PI)};
+    const Pose q{rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-M_PI, M_PI)};
+    const size_t k = size_t(i) % 3;
+    reused.emplace(scenes[(k + 1) % 3]);  // the same storage, other shapes
+    for (const CollisionChecker* c : {&checkers[k], &*reused, &checkers[k]}) {
+      const Ring a = placedRing(c->shrunkShape(0), p), b = placedRing(c->shrunkShape(1), q);
+      const double nearest =
+          ringsIntersect(a, boundingBox(a), b, boundingBox(b)) ? 0 : nearestEdgePair(a, b);
+      ASSERT_NEAR(c->robotsDistance(0, p, 1, q), nearest, 1e-12) << "placement " << i;
+      ASSERT_EQ(c->robotsDisjoint(0, p, 1, q), nearest > 0) << "placement " << i;
+    }
+  }
 }
 
 // A robot's clearance against every pair of robot and obstacle edges and the bounds' sides;
