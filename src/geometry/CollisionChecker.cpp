@@ -96,6 +96,8 @@ struct PlacedRobot {
   bool valid = false;
   Ring ring;
   Placed placed;
+  // The rotation of the last placement: robots that only translate keep their angle.
+  double theta = std::numeric_limits<double>::quiet_NaN(), cos = 1, sin = 0;
 };
 struct PlacementCache {
   uint64_t shapes = 0;
@@ -148,13 +150,20 @@ Placed asPlaced(const Ring& ring, const Disc& disc, const Box& box) {
 }
 
 // The ring placed, and its box, in one pass over the vertices.
-void placeRing(const Ring& shape, const Pose& pose, Ring& out, Box& box) {
-  const Transform t(pose);
+void placeRing(const Ring& shape, const Pose& pose, PlacedRobot& r, Box& box) {
+  if (!(pose.theta == r.theta)) {
+    const Transform rotation(pose);
+    r.theta = pose.theta, r.cos = rotation.c, r.sin = rotation.s;
+  }
+  // As Transform places a point, in the same order of operations.
+  const double c = r.cos, sn = r.sin;
+  Ring& out = r.ring;
   out.resize(shape.size());
   box = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
          -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   for (size_t i = 0; i < shape.size(); ++i) {
-    const Vec2 v = t(shape[i]);
+    const Vec2 u = shape[i];
+    const Vec2 v{pose.x + c * u.x - sn * u.y, pose.y + sn * u.x + c * u.y};
     out[i] = v;
     box.xmin = std::min(box.xmin, v.x);
     box.ymin = std::min(box.ymin, v.y);
@@ -187,7 +196,7 @@ const Placed& placeRobot(const CollisionChecker& checker, uint64_t shapes, size_
     r.placed = {nullptr, d, discBox(d)};
   } else {
     r.placed.ring = &r.ring;
-    placeRing(checker.shrunkShape(robot), pose, r.ring, r.placed.box);
+    placeRing(checker.shrunkShape(robot), pose, r, r.placed.box);
   }
   return r.placed;
 }
@@ -207,7 +216,8 @@ Contact CollisionChecker::robotContact(size_t robot, const Pose& pose) const {
   // The bounds are convex, so the robot is inside them when its box is.
   if (!bounds_.contains(a.box)) return {Contact::Kind::Bounds, 0};
   for (size_t i = 0; i < obstacles_.size(); ++i)
-    if (overlap(a, asPlaced(obstacles_[i], obstacleDiscs_[i], obstacleBoxes_[i])))
+    if (a.box.overlaps(obstacleBoxes_[i]) &&
+        overlap(a, asPlaced(obstacles_[i], obstacleDiscs_[i], obstacleBoxes_[i])))
       return {Contact::Kind::Obstacle, i};
   return {};
 }
@@ -256,6 +266,9 @@ CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const
   else
     c.distance = std::min(c.distance, boundsGap(bounds_, a.disc.center, a.disc.radius));
   for (size_t i = 0; i < obstacles_.size() && c.distance > 0; ++i) {
+    // Boxes that far apart are gap's answer too, without its square root (the margin keeps
+    // borderline boxes to gap's own test).
+    if (a.box.distance2(obstacleBoxes_[i]) > c.distance * c.distance * (1 + 1e-9)) continue;
     const double d =
         gap(a, asPlaced(obstacles_[i], obstacleDiscs_[i], obstacleBoxes_[i]), c.distance);
     if (d < c.distance) c = {d, {Contact::Kind::Obstacle, i}};
