@@ -180,7 +180,7 @@ class Optimizer final : detail::ShortWay {
       setPose(stretch.back(), robot, after[k - st.begin + 1]);
     }
     stretch.push_back(st.aimed);
-    if (!certified(stretch)) return false;
+    if (!certified(stretch, robot)) return false;
     for (size_t k = st.begin; k < st.end; ++k) w[k] = std::move(stretch[k - st.begin + 1]);
     return true;
   }

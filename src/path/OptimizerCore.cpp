@@ -50,15 +50,26 @@ PathCheckResult OptimizerCore::check(const std::vector<Config>& stretch) {
 // Most candidates cut through an obstacle, and the certifier, which advances from the start,
 // takes fifty evaluations and more to reach it: poses along each segment, tested first coarse
 // to fine, refuse most of them at a few (the certifier would refuse them too, at that pose).
-bool OptimizerCore::certified(const std::vector<Config>& stretch) {
+bool OptimizerCore::certified(const std::vector<Config>& stretch, size_t moved) {
   ++s_.checked;
-  return probedFree(stretch) && check(stretch).ok;
+  return probedFree(stretch, moved) && check(stretch).ok;
+}
+
+// The other robots are where the certified path has them, clear of the obstacles and of each
+// other: only the moved robot's tests can fail.
+bool OptimizerCore::freeAt(const Config& q, size_t moved) {
+  if (moved == kEveryRobot) return checker_.isFree(q);
+  const Pose p = poseOf(q, moved);
+  if (!checker_.robotFree(moved, p)) return false;
+  for (size_t j = 0; j < scene_.robots.size(); ++j)
+    if (j != moved && !checker_.robotsDisjoint(moved, p, j, poseOf(q, j))) return false;
+  return true;
 }
 
 // Poses at 1/2 of every segment, then 1/4 and 3/4, and so on: halving the spacing each level
 // while it is longer (in cost, how far the robots' points move) than half the smallest robot's
 // radius, up to kProbeLevels levels (7 poses a segment; the middle alone for discs).
-bool OptimizerCore::probedFree(const std::vector<Config>& stretch) {
+bool OptimizerCore::probedFree(const std::vector<Config>& stretch, size_t moved) {
   for (size_t level = 1; level <= probeLevels_; ++level) {
     const size_t parts = size_t(1) << level;
     if (level == 2) {  // the segments' costs, once finer poses may be tested
@@ -72,8 +83,11 @@ bool OptimizerCore::probedFree(const std::vector<Config>& stretch) {
       finer = true;
       for (size_t j = 1; j < parts; j += 2) {
         s_.evaluations += 1;
-        if (!checker_.isFree(lerp(stretch[k - 1], stretch[k], double(j) / double(parts))))
-          return false;
+        const double t = double(j) / double(parts);
+        probe_.resize(stretch[k].size());
+        for (size_t c = 0; c < probe_.size(); ++c)
+          probe_[c] = stretch[k - 1][c] + t * (stretch[k][c] - stretch[k - 1][c]);
+        if (!freeAt(probe_, moved)) return false;
       }
     }
     if (!finer) break;

@@ -26,7 +26,11 @@ class OptimizerCore {
   bool done() const { return s_.evaluations * workPerEvaluation_ >= limit_ || stop_(); }
 
   PathCheckResult check(const std::vector<Config>& stretch);
-  bool certified(const std::vector<Config>& stretch);
+  static constexpr size_t kEveryRobot = size_t(-1);
+  /// Whether the stretch is probed free and then certified. `moved`: the only robot whose
+  /// motion differs from the certified path's (the others follow it), so that the probes test
+  /// that robot alone, against the obstacles and the others.
+  bool certified(const std::vector<Config>& stretch, size_t moved = kEveryRobot);
   const std::vector<double>& cumulativeCost(const std::vector<Config>& w);
   void changed() { ++version_; }
 
@@ -41,11 +45,13 @@ class OptimizerCore {
       scene_.robots.size() + scene_.robots.size() * (scene_.robots.size() - 1) / 2;
 
  private:
-  bool probedFree(const std::vector<Config>& stretch);
+  bool probedFree(const std::vector<Config>& stretch, size_t moved);
+  bool freeAt(const Config& q, size_t moved);
 
   static constexpr size_t kProbeLevels = 3;  // of poses tested before a candidate is certified
   size_t probeLevels_ = kProbeLevels;
   std::vector<double> probeCost_;  // probedFree's, per segment
+  Config probe_;                   // probedFree's pose
   double probeSpacing_ = 0;
   PathCheckSettings quick_;
   std::vector<double> cum_;  // cumulativeCost's, for the path at `cumVersion_`

@@ -90,7 +90,8 @@ bool ShortWay::rewindPass(std::vector<Config>& w, size_t robot, const std::vecto
         std::vector<Config> candidate =
             spin ? spunStretch(w, stretch, runs, moved, mirror, from, robot) : stretch;
         if (spin && pathCost(checker_, candidate) >= cum[to] - cum[from]) continue;
-        if (!certified(candidate)) continue;
+        // A rewound window changes the robot's angle alone; a spun one may insert poses.
+        if (!certified(candidate, spin ? kEveryRobot : robot)) continue;
         takeWindow(w, from, to, candidate, c, r.turns);
         return true;
       }
