@@ -7,7 +7,8 @@
 # Usage: scripts/bench-generalization.sh tuning|fresh|fresh2 [OUTPUT_DIR] (default
 # bench-generalization-SET); fresh2 is seeds 200-219, for when a fresh seed had to be looked at.
 # Environment: LIMIT (seconds per run, default 10), JOBS (cores to fill, default 2; an auto run
-# takes both), FAMILIES (default: all below; FAMILY:ROBOT[,ROBOT] for the family with those robots
+# takes both), RUNS (runs per scene and planner, default 1; a scene counts at its runs' median),
+# FAMILIES (default: all below; FAMILY:ROBOT[,ROBOT] for the family with those robots
 # translating only, e.g. niche-three:oncoming), PLANNERS (default: the six above).
 # It writes OUTPUT_DIR/summary.md: per family and planner, the median over seeds (a failure
 # counts as the limit) and the seeds solved, and the ratios of the best OMPL planner's median to
@@ -52,7 +53,7 @@ for spec in $families; do
     scenes+=("$out/scenes/$file-$k.json")
   done
 done
-build/mms bench "${scenes[@]}" --planners "$planners" --runs 1 --time-limit "$limit" \
+build/mms bench "${scenes[@]}" --planners "$planners" --runs "${RUNS:-1}" --time-limit "$limit" \
   --jobs "$jobs" -o "$out/bench"
 python3 scripts/generalization-summary.py "$out/bench/results.csv" "$limit" > "$out/summary.md"
 python3 scripts/generalization-summary.py "$out/bench/results.csv" "$limit" wall_seconds \

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The generalization suite's table from an `mms bench` results.csv (one run per scene).
+"""The generalization suite's table from an `mms bench` results.csv (one run per scene, or the
+median of a scene's runs).
 
 Usage: generalization-summary.py RESULTS_CSV TIME_LIMIT [seconds|wall_seconds]
 
@@ -26,16 +27,19 @@ OURS = ("auto", "mms")
 def main():
     path, limit = sys.argv[1], float(sys.argv[2])
     column = sys.argv[3] if len(sys.argv) > 3 else "seconds"
-    times = defaultdict(dict)  # (family, planner) -> {seed scene: seconds}
+    per_run = defaultdict(lambda: defaultdict(list))  # (family, planner) -> {seed scene: [seconds]}
     solved_by = defaultdict(lambda: defaultdict(int))
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
             family = re.sub(r"-\d+$", "", row["scene"])
             ok = row["status"] == "found"
             seconds = float(row[column]) if ok else limit
-            times[(family, row["planner"])][row["scene"]] = min(seconds, limit)
+            per_run[(family, row["planner"])][row["scene"]].append(min(seconds, limit))
             if ok and row.get("solved_by"):
                 solved_by[family][row["solved_by"]] += 1
+    # Several runs of a scene (`mms bench --runs N`): their median stands for the scene.
+    times = {k: {scene: statistics.median(v) for scene, v in by_scene.items()}
+             for k, by_scene in per_run.items()}
     families = sorted({f for f, _ in times})
     planners = sorted({p for _, p in times}, key=lambda p: (p not in OURS, OURS.index(p) if p in OURS else 0, p))
 
