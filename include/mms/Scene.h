@@ -57,10 +57,16 @@ using Config = std::vector<double>;
 inline Pose poseOf(const Config& q, size_t robot) {
   return {q[3 * robot], q[3 * robot + 1], q[3 * robot + 2]};
 }
-/// The configuration a fraction `t` of the way from `a` to `b`, every coordinate alike.
+/// The configuration a fraction `t` of the way from `a` to `b`, every coordinate alike, into
+/// `out` (no allocation once it is large enough).
+inline void lerp(const Config& a, const Config& b, double t, Config& out) {
+  out.resize(a.size());
+  for (size_t c = 0; c < a.size(); ++c) out[c] = a[c] + t * (b[c] - a[c]);
+}
+/// The same, as a new configuration.
 inline Config lerp(const Config& a, const Config& b, double t) {
-  Config q(a.size());
-  for (size_t c = 0; c < a.size(); ++c) q[c] = a[c] + t * (b[c] - a[c]);
+  Config q;
+  lerp(a, b, t, q);
   return q;
 }
 inline void setPose(Config& q, size_t robot, const Pose& p) {

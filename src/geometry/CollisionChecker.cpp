@@ -113,13 +113,15 @@ bool discMeetsRing(const Disc& d, const Ring& ring) {
   return insideRing(ring, d.center) || distanceToEdges(ring, d.center) < d.radius;
 }
 
-bool overlap(const Placed& a, const Placed& b) {
-  if (!a.box.overlaps(b.box)) return false;
+// Whether two shapes whose boxes overlap meet.
+bool shapesMeet(const Placed& a, const Placed& b) {
   if (a.ring && b.ring) return ringsIntersect(*a.ring, a.box, *b.ring, b.box);
   if (a.ring) return discMeetsRing(b.disc, *a.ring);
   if (b.ring) return discMeetsRing(a.disc, *b.ring);
   return norm(a.disc.center - b.disc.center) < a.disc.radius + b.disc.radius;
 }
+
+bool overlap(const Placed& a, const Placed& b) { return a.box.overlaps(b.box) && shapesMeet(a, b); }
 
 // Distance between the two shapes, or `bound` when it is at least that.
 double gap(const Placed& a, const Placed& b, double bound) {
@@ -149,21 +151,20 @@ Placed asPlaced(const Ring& ring, const Disc& disc, const Box& box) {
   return disc.radius > 0 ? Placed{nullptr, disc, box} : Placed{&ring, {}, box};
 }
 
-// The ring placed, and its box, in one pass over the vertices.
-void placeRing(const Ring& shape, const Pose& pose, PlacedRobot& r, Box& box) {
+// The ring placed, and its box (`r.placed.box`), in one pass over the vertices.
+void placeRing(const Ring& shape, const Pose& pose, PlacedRobot& r) {
   if (!(pose.theta == r.theta)) {
     const Transform rotation(pose);
     r.theta = pose.theta, r.cos = rotation.c, r.sin = rotation.s;
   }
-  // As Transform places a point, in the same order of operations.
-  const double c = r.cos, sn = r.sin;
+  const Transform t(r.cos, r.sin, pose.x, pose.y);
   Ring& out = r.ring;
+  Box& box = r.placed.box;
   out.resize(shape.size());
   box = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
          -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   for (size_t i = 0; i < shape.size(); ++i) {
-    const Vec2 u = shape[i];
-    const Vec2 v{pose.x + c * u.x - sn * u.y, pose.y + sn * u.x + c * u.y};
+    const Vec2 v = t(shape[i]);
     out[i] = v;
     box.xmin = std::min(box.xmin, v.x);
     box.ymin = std::min(box.ymin, v.y);
@@ -196,7 +197,7 @@ const Placed& placeRobot(const CollisionChecker& checker, uint64_t shapes, size_
     r.placed = {nullptr, d, discBox(d)};
   } else {
     r.placed.ring = &r.ring;
-    placeRing(checker.shrunkShape(robot), pose, r, r.placed.box);
+    placeRing(checker.shrunkShape(robot), pose, r);
   }
   return r.placed;
 }
@@ -217,7 +218,7 @@ Contact CollisionChecker::robotContact(size_t robot, const Pose& pose) const {
   if (!bounds_.contains(a.box)) return {Contact::Kind::Bounds, 0};
   for (size_t i = 0; i < obstacles_.size(); ++i)
     if (a.box.overlaps(obstacleBoxes_[i]) &&
-        overlap(a, asPlaced(obstacles_[i], obstacleDiscs_[i], obstacleBoxes_[i])))
+        shapesMeet(a, asPlaced(obstacles_[i], obstacleDiscs_[i], obstacleBoxes_[i])))
       return {Contact::Kind::Obstacle, i};
   return {};
 }

@@ -83,10 +83,7 @@ bool OptimizerCore::probedFree(const std::vector<Config>& stretch, size_t moved)
       finer = true;
       for (size_t j = 1; j < parts; j += 2) {
         s_.evaluations += 1;
-        const double t = double(j) / double(parts);
-        probe_.resize(stretch[k].size());
-        for (size_t c = 0; c < probe_.size(); ++c)
-          probe_[c] = stretch[k - 1][c] + t * (stretch[k][c] - stretch[k - 1][c]);
+        lerp(stretch[k - 1], stretch[k], double(j) / double(parts), probe_);
         if (!freeAt(probe_, moved)) return false;
       }
     }
