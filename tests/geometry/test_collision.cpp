@@ -362,3 +362,40 @@ TEST(Exact, InteriorPredicateIgnoresTouching) {
   EXPECT_TRUE(exact::interiorsIntersect(a, {{0.5, 0.5}, {2, 0.5}, {2, 2}, {0.5, 2}}));
   EXPECT_TRUE(exact::interiorsIntersect(a, {{0.2, 0.2}, {0.8, 0.2}, {0.5, 0.8}}));  // contained
 }
+
+// Two polygons' distance: 0 exactly when their interiors meet (CGAL's exact predicate), one
+// inside the other included; otherwise the nearest pair of edges, or the bound when that is
+// nearer. Random star polygons at random offsets and scales, small ones often inside large.
+TEST(RingDistance, IsTheNearestEdgePairOrZeroWhereTheyMeet) {
+  Random rng(41);
+  int meet = 0, inside = 0, apart = 0, bounded = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Ring a = randomStarPolygon(rng, {0, 0}, 0.5, 2.0, 3 + int(rng.below(10)));
+    const double scale = rng.below(3) == 0 ? 0.1 : 1.0;
+    const Vec2 at{rng.uniform(-4, 4), rng.uniform(-4, 4)};
+    const Ring b = randomStarPolygon(rng, at, 0.5 * scale, 2.0 * scale, 3 + int(rng.below(10)));
+    const Box boxA = boundingBox(a), boxB = boundingBox(b);
+    const double nearest = nearestEdgePair(a, b);
+    const double bound =
+        rng.below(4) == 0 ? rng.uniform(0, 2) : std::numeric_limits<double>::infinity();
+    const double d = ringDistance(a, boxA, b, boxB, bound);
+    if (exact::interiorsIntersect(a, b)) {
+      ++meet;
+      inside += nearest > 0;
+      ASSERT_EQ(d, 0.0) << "pair " << i;
+      ASSERT_EQ(ringDistance(b, boxB, a, boxA, bound), 0.0) << "pair " << i;
+    } else if (nearest > 1e-9) {
+      ++apart;
+      if (nearest >= bound) {  // reported as the bound, squared and back
+        ++bounded;
+        ASSERT_DOUBLE_EQ(d, bound) << "pair " << i;
+      } else {
+        ASSERT_NEAR(d, nearest, 1e-12) << "pair " << i;  // edges taken the other way round
+      }
+    }
+  }
+  EXPECT_GT(meet, 300);
+  EXPECT_GT(inside, 30);  // one inside the other, no edges crossing
+  EXPECT_GT(apart, 300);
+  EXPECT_GT(bounded, 30);
+}
