@@ -68,7 +68,7 @@ struct Transform {
   double c = 1, s = 0, tx = 0, ty = 0;
   explicit Transform(const Pose& p)
       : c(std::cos(p.theta)), s(std::sin(p.theta)), tx(p.x), ty(p.y) {}
-  /// From a rotation's cosine and sine already at hand (a robot that only translates).
+  /// From a rotation's cosine and sine already at hand (kept while a robot's angle stays).
   Transform(double cosine, double sine, double x, double y) : c(cosine), s(sine), tx(x), ty(y) {}
   Vec2 operator()(Vec2 v) const { return {tx + c * v.x - s * v.y, ty + s * v.x + c * v.y}; }
 };
