@@ -144,7 +144,6 @@ class Challenger final : public Termination::Watcher {
     if (++checks_ >= budget_) spent_ = true;  // this check's iteration is the budget's last
     if (started_.load(std::memory_order_relaxed) || now < headStartEnds_) return;
     if (started_.exchange(true)) return;
-    prepareTheProcess();  // not before: a sampler done within the head start runs as alone
     const bool apart = cores_.plan();
     bool created = apart && start(&cores_.others());
     // Cores that cannot be set (a cpuset changed under the process) leave them to the scheduler.
@@ -161,7 +160,6 @@ class Challenger final : public Termination::Watcher {
   /// before the head start was over.
   void runHere() {
     if (started_.exchange(true)) return;
-    prepareTheProcess();
     run(here_);
   }
   /// Ends MMS: it stops at its next check.
@@ -210,6 +208,8 @@ class Challenger final : public Termination::Watcher {
     return ok;
   }
   void run(const Termination& stop) {
+    // Here, not on the sampler's thread: loading libgcc_s took 0.2 ms of its time.
+    prepareTheProcess();
     const Planner::Progress relay = [this](const PlanStatistics& s) {
       const std::lock_guard lock(progressMutex_);
       if (progress_ && *progress_) (*progress_)(s);
