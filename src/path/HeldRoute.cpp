@@ -35,7 +35,8 @@ std::optional<std::vector<Vec2>> HeldRoutes::route(double theta, Vec2 a, Vec2 b,
     const int cell = slice->locate(a);
     if (cell < 0 || slice->locate(b) != cell) return std::nullopt;
     return routeInCell(
-        slice->cell(size_t(cell)), [&](Vec2 p) { return slice->locate(p) == cell; }, a, b);
+        slice->cell(size_t(cell)), [&](Vec2 p) { return slice->locate(p) == cell; }, a, b,
+        RouteShape::Pulled);
   } catch (const Stopped&) {
     return std::nullopt;
   }

@@ -28,7 +28,8 @@ class HeldRoutes {
   HeldRoutes& operator=(const HeldRoutes&) = delete;
 
   /// The reference point's way from `a` to `b` (both included) with the robot at `theta`,
-  /// through the midpoints of a triangulation of the free cell holding both; nothing if they
+  /// pulled tight through a triangulation of the free cell holding both (CellRoute.h): the
+  /// optimiser takes a route only if it is short enough; nothing if they
   /// lie in different cells, on a boundary, or the slices are spent; nothing too once `stop`
   /// holds, which ends a slice being built.
   std::optional<std::vector<Vec2>> route(double theta, Vec2 a, Vec2 b, const Termination& stop);
