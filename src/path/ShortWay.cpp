@@ -147,10 +147,11 @@ ShortWay::SpinEnds ShortWay::spinEnds(const std::vector<Config>& w, size_t from,
   return e;
 }
 
-// What routedStretch costs at least: straight to the place, the turn, straight on.
+// What routedStretch costs at least: straight to the place, the turn, straight on at the
+// turned angle (the window ends there; the rest of the path is shifted by the full turns).
 double ShortWay::leastRoutedCost(const SpinEnds& e, size_t robot) const {
   return poseCost(checker_, robot, e.first, e.a) + poseCost(checker_, robot, e.a, e.b) +
-         poseCost(checker_, robot, e.b, e.last);
+         std::hypot(e.last.x - e.b.x, e.last.y - e.b.y);
 }
 
 // The clearest place climbed to from the robot's spinning centre halfway along segment k.
