@@ -4,7 +4,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
-#include <cmath>
 #include <deque>
 #include <limits>
 #include <map>
@@ -32,7 +31,6 @@ using Face = CDT::Face_handle;
 using P = K::Point_2;
 
 Vec2 toVec(const P& p) { return {p.x(), p.y()}; }
-double distance(Vec2 p, Vec2 q) { return std::hypot(q.x - p.x, q.y - p.y); }
 
 // The cell triangulated, each triangle marked inside or not. A cell among thousands of
 // obstacles takes seconds to triangulate and classify: the planner's time limit is checked as
@@ -114,7 +112,7 @@ bool shortestTriangles(const CDT& cdt, Face from, Face to, Vec2 a) {
     for (int i = 0; i < 3; ++i) {
       Face g = f->neighbor(i);
       if (!crossable(cdt, f, i)) continue;
-      const double e = d + distance(at, edgeMidpoint(f, i));
+      const double e = d + norm(edgeMidpoint(f, i) - at);
       if (e >= g->info().reached) continue;
       g->info().reached = e;
       g->info().visitedFrom = g->index(f);

@@ -14,8 +14,7 @@ namespace {
 
 double length(const std::vector<Vec2>& route) {
   double sum = 0;
-  for (size_t k = 1; k < route.size(); ++k)
-    sum += std::hypot(route[k].x - route[k - 1].x, route[k].y - route[k - 1].y);
+  for (size_t k = 1; k < route.size(); ++k) sum += norm(route[k] - route[k - 1]);
   return sum;
 }
 
