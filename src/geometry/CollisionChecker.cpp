@@ -70,6 +70,7 @@ CollisionChecker::CollisionChecker(const Scene& scene)
                                     "': its radius is not above the contact tolerance");
       discs_.push_back(shrunk);
       radii_.push_back(shrunk);
+      holdsReference_.push_back(true);
       shapes_.push_back(discInscribed({{0, 0}, shrunk}, 2 * kDiscSides));
       continue;
     }
@@ -77,6 +78,7 @@ CollisionChecker::CollisionChecker(const Scene& scene)
     if (s.error) throw std::invalid_argument("robot '" + r.name + "': " + *s.error);
     discs_.push_back(0);
     radii_.push_back(mms::radius(s.ring));
+    holdsReference_.push_back(insideRing(s.ring, {0, 0}));
     shapes_.push_back(std::move(s.ring));
   }
 }
@@ -225,6 +227,17 @@ Contact CollisionChecker::robotContact(size_t robot, const Pose& pose) const {
 
 bool CollisionChecker::robotFree(size_t robot, const Pose& pose) const {
   return robotContact(robot, pose).kind == Contact::Kind::None;
+}
+
+bool CollisionChecker::referenceBlocked(size_t robot, const Pose& pose) const {
+  if (!holdsReference_[robot]) return false;
+  const Vec2 p{pose.x, pose.y};
+  for (size_t i = 0; i < obstacles_.size(); ++i) {
+    if (!obstacleBoxes_[i].contains(p)) continue;
+    const Disc& d = obstacleDiscs_[i];
+    if (d.radius > 0 ? norm(p - d.center) < d.radius : insideRing(obstacles_[i], p)) return true;
+  }
+  return false;
 }
 
 bool CollisionChecker::robotsDisjoint(size_t a, const Pose& pa, size_t b, const Pose& pb) const {

@@ -44,6 +44,11 @@ class CollisionChecker {
 
   /// Robot `robot` at `pose` against the bounds and the obstacles (other robots ignored).
   bool robotFree(size_t robot, const Pose& pose) const;
+  /// A test that costs a point's, before robotFree where most poses are blocked (a sampler's
+  /// redrawn samples in a tight scene): true when the robot's reference point, which its
+  /// shrunk shape holds, lies in an obstacle, so that the robot meets it. False says nothing
+  /// (always so for a robot whose reference point lies outside its shape).
+  bool referenceBlocked(size_t robot, const Pose& pose) const;
   /// Robots a and b at their poses do not overlap.
   bool robotsDisjoint(size_t a, const Pose& pa, size_t b, const Pose& pb) const;
   /// Every robot free and no two robots overlap.
@@ -101,6 +106,7 @@ class CollisionChecker {
   std::vector<Ring> shapes_;
   std::vector<double> radii_;
   std::vector<double> discs_;
+  std::vector<bool> holdsReference_;  // whether the shrunk shape holds its frame's origin
   // Names this checker's shapes for the per-thread cache of placed robots (one per robot, its
   // last pose): an evaluation tests each robot against the obstacles and then in every pair,
   // and held robots keep their pose from one evaluation to the next.

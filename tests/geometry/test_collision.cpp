@@ -100,6 +100,46 @@ TEST(CollisionChecker, AgreesWithExactPredicatesOnRandomPlacements) {
   EXPECT_GT(blocked, n / 10);
 }
 
+// The point test before robotFree: it may only say "blocked" where robotFree does; where the
+// free space is narrow (a bend, a keyhole) it must say so for most blocked poses, or it only
+// adds work. A robot whose reference point lies outside its shape gets no answer from it.
+TEST(CollisionChecker, ReferenceBlockedOnlyWhereTheRobotIsBlocked) {
+  Scene away = benchmarkScene(7);
+  for (Vec2& v : away.robots[0].shape) v.x += 5;  // the frame's origin far outside the shape
+  struct Case {
+    const char* name;
+    Scene scene;
+    double share;  // of the blocked poses the test must catch; 0: none
+  };
+  const std::vector<Case> cases = {{"bend", bendScene(3), 0.5},
+                                   {"keyhole", keyholeScene(2), 0.5},
+                                   {"swallow", swallowScene(5), 0.1},
+                                   {"discs", discsSwapScene(4), 0.1},
+                                   {"random polygons", benchmarkScene(7), 0.1},
+                                   {"origin outside", away, 0}};
+  for (const Case& c : cases) {
+    const CollisionChecker checker(c.scene);
+    Random rng(13);
+    const Box& b = c.scene.bounds;
+    int blocked = 0, caught = 0;
+    for (int i = 0; i < 20000; ++i) {
+      const Pose p{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax),
+                   rng.uniform(-M_PI, M_PI)};
+      const bool free = checker.robotFree(0, p), early = checker.referenceBlocked(0, p);
+      ASSERT_FALSE(free && early) << c.name << " at " << p.x << ", " << p.y << ", " << p.theta;
+      blocked += !free;
+      caught += early;
+    }
+    std::printf("[ info ] %s: %d of %d blocked poses caught by the point test\n", c.name, caught,
+                blocked);
+    EXPECT_GT(blocked, 1000) << c.name;
+    if (c.share > 0)
+      EXPECT_GT(caught, c.share * blocked) << c.name;
+    else
+      EXPECT_EQ(caught, 0) << c.name;
+  }
+}
+
 TEST(CollisionChecker, TreatsNearContactsAsTouching) {
   // Placements within ~1e-12 of contact (found by bisection with the exact predicate) are
   // tolerance-close: the checker must call them free on both sides of the contact.
