@@ -476,33 +476,32 @@ std::shared_ptr<StampedMotions> setMotions(const ob::SpaceInformationPtr& si,
   return stamps;
 }
 
-}  // namespace
+// OMPL's problem for the scene: its space, the checker as validity checker, the motion
+// validator, the planner, start and goal, and the free sampler when asked for.
+struct Problem {
+  std::shared_ptr<og::SimpleSetup> setup;
+  std::shared_ptr<StampedMotions> stamps;  // with a record asked for
+  MadePlanner made;
+};
 
-OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop,
-                        const OmplProgress& progress) {
-  // The time to a certified path, as MMS reports it: setup, solve, certification.
-  const Stopwatch total;
-  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-  ompl::RNG::setSeed(settings.seed);
-  const CollisionChecker checker(scene);
-  const Layout layout{scene};
+Problem makeProblem(const Scene& scene, const OmplSettings& settings, const Layout& layout,
+                    const CollisionChecker& checker, const Stopwatch& clock) {
+  Problem p;
+  p.setup = std::make_shared<og::SimpleSetup>(makeSpace(scene));
   // Freeing a million states takes seconds; a process about to exit can skip it.
-  auto owned = std::make_shared<og::SimpleSetup>(makeSpace(scene));
-  og::SimpleSetup& setup = *owned;
   if (settings.keepUntilExit) {
     static auto* kept =
         new std::vector<std::shared_ptr<og::SimpleSetup>>();  // reachable, never freed
-    kept->push_back(owned);
+    kept->push_back(p.setup);
   }
+  og::SimpleSetup& setup = *p.setup;
   const ob::SpaceInformationPtr si = setup.getSpaceInformation();
   setup.setStateValidityChecker(std::make_shared<Validity>(si, layout, checker));
-  const std::shared_ptr<StampedMotions> stamps = setMotions(si, settings, layout, checker, total);
-  const double extent = si->getMaximumExtent();
-  const MadePlanner made = makePlanner(si, settings, extent);
-  setup.setPlanner(made.planner);
+  p.stamps = setMotions(si, settings, layout, checker, clock);
+  p.made = makePlanner(si, settings, si->getMaximumExtent());
+  setup.setPlanner(p.made.planner);
   if (settings.planner == "rrtstar" || settings.planner == "bitstar")
     setup.setOptimizationObjective(std::make_shared<PathLength>(si));
-
   ob::ScopedState<> start(setup.getStateSpace()), goal(setup.getStateSpace());
   layout.fromConfig(startConfig(scene), start.get());
   layout.fromConfig(goalConfig(scene), goal.get());
@@ -513,57 +512,79 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
     });
   }
   setup.setup();
+  return p;
+}
+
+// OMPL's solution as mms waypoints. OMPL interpolates SO(2) the short way; unwrapping the
+// angles says the same in mms-path/1.
+std::vector<Config> waypointsOf(const og::PathGeometric& path, const Layout& layout) {
+  std::vector<Config> w;
+  Config q;
+  for (size_t k = 0; k < path.getStateCount(); ++k) {
+    layout.toConfig(path.getState(k), q, w.empty() ? nullptr : &w.back());
+    w.push_back(q);
+  }
+  return w;
+}
+
+// The solution certified (a refused one is cleared) and, when asked for, simplified. The
+// simplifier comes after the time to a path, as in OMPL's benchmarks, and within the time
+// limit; its path replaces the first only once certified.
+void certifySolution(og::SimpleSetup& setup, const Scene& scene, const OmplSettings& settings,
+                     const Layout& layout, const CollisionChecker& checker, const Termination& stop,
+                     const Stopwatch& total, OmplResult& r) {
+  r.waypoints = waypointsOf(setup.getSolutionPath(), layout);
+  r.certificate = checkPath(scene, checker, r.waypoints);
+  r.status = r.certificate.ok ? PlanStatus::Found : PlanStatus::Uncertified;
+  if (!r.certificate.ok) r.waypoints.clear();
+  r.seconds = total.seconds();
+  if (!settings.simplify || r.status != PlanStatus::Found || stop()) return;
+  Stopwatch simplify;
+  setup.simplifySolution(ob::PlannerTerminationCondition([&] { return stop(); }));
+  std::vector<Config> w = waypointsOf(setup.getSolutionPath(), layout);
+  if (const PathCheckResult c = checkPath(scene, checker, w); c.ok) {
+    r.waypoints = std::move(w);
+    r.certificate = c;
+  }
+  r.simplifySeconds = simplify.seconds();
+}
+
+}  // namespace
+
+OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const Termination& stop,
+                        const OmplProgress& progress) {
+  // The time to a certified path, as MMS reports it: setup, solve, certification.
+  const Stopwatch total;
+  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ompl::RNG::setSeed(settings.seed);
+  const CollisionChecker checker(scene);
+  const Layout layout{scene};
+  const Problem problem = makeProblem(scene, settings, layout, checker, total);
+  og::SimpleSetup& setup = *problem.setup;
 
   OmplResult r;
   r.setupSeconds = total.seconds();
   Stopwatch watch;
-  const ProgressReporter reporter(progress, made, total);
+  const ProgressReporter reporter(progress, problem.made, total);
   const ob::PlannerStatus status = setup.solve(ob::PlannerTerminationCondition([&] {
     ++r.iterations;
     reporter();
     return stop();
   }));
   r.solveSeconds = watch.seconds();
-  const GraphSize size = made.size();
+  const GraphSize size = problem.made.size();
   r.states = size.vertices;
   r.edges = size.edges;
-  if (stamps) {
+  if (problem.stamps) {
     const Stopwatch recording;
-    r.tree = treeOf(*made.planner, si, layout, *stamps, float(total.seconds()),
-                    RecordBudget{}.numbers, r.growth);
+    r.tree = treeOf(*problem.made.planner, setup.getSpaceInformation(), layout, *problem.stamps,
+                    float(total.seconds()), RecordBudget{}.numbers, r.growth);
     r.recordSeconds = recording.seconds();
   }
-  if (status != ob::PlannerStatus::EXACT_SOLUTION) {
+  if (status == ob::PlannerStatus::EXACT_SOLUTION)
+    certifySolution(setup, scene, settings, layout, checker, stop, total, r);
+  else
     r.seconds = total.seconds();
-    return r;
-  }
-  // OMPL interpolates SO(2) the short way; unwrapping the angles says the same in mms-path/1.
-  auto waypointsOf = [&](const og::PathGeometric& path) {
-    std::vector<Config> w;
-    Config q;
-    for (size_t k = 0; k < path.getStateCount(); ++k) {
-      layout.toConfig(path.getState(k), q, w.empty() ? nullptr : &w.back());
-      w.push_back(q);
-    }
-    return w;
-  };
-  r.waypoints = waypointsOf(setup.getSolutionPath());
-  r.certificate = checkPath(scene, checker, r.waypoints);
-  r.status = r.certificate.ok ? PlanStatus::Found : PlanStatus::Uncertified;
-  if (!r.certificate.ok) r.waypoints.clear();
-  r.seconds = total.seconds();
-  // The simplifier comes after the time to a path, as in OMPL's benchmarks, and within the
-  // time limit; its path replaces the first only once certified.
-  if (settings.simplify && r.status == PlanStatus::Found && !stop()) {
-    Stopwatch simplify;
-    setup.simplifySolution(ob::PlannerTerminationCondition([&] { return stop(); }));
-    std::vector<Config> w = waypointsOf(setup.getSolutionPath());
-    if (const PathCheckResult c = checkPath(scene, checker, w); c.ok) {
-      r.waypoints = std::move(w);
-      r.certificate = c;
-    }
-    r.simplifySeconds = simplify.seconds();
-  }
   return r;
 }
 
