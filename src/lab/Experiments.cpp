@@ -128,6 +128,68 @@ size_t theoremBound(const DimSetup& s) {
 
 }  // namespace
 
+namespace {
+
+// One dimension's trials of MMS and of PRM, each outcome with its time.
+struct DimTrials {
+  std::vector<Outcome> mms, prm;
+  std::vector<double> mmsSeconds, prmSeconds;
+};
+
+DimTrials runDimTrials(const LabOptions& o, const DimSetup& s, size_t si, size_t trials,
+                       size_t maxRounds, size_t maxMilestones) {
+  const BoxSpace space = wallWithHole(s.d, s.rho, 2 * s.d, o.seed);
+  const Point start = wallStart(s.d), goal = wallGoal(s.d);
+  DimTrials t{std::vector<Outcome>(trials), std::vector<Outcome>(trials),
+              std::vector<double>(trials), std::vector<double>(trials)};
+  Stopwatch clock;
+  EuclideanMmsSettings settings;
+  settings.families = perpendicularFamilies(s.d, s.k);
+  settings.maxRounds = maxRounds;
+  parallelFor(trials, o.threads, [&](size_t i) {
+    EuclideanMmsSettings mine = settings;
+    mine.seed = trialSeed(o.seed, si, i);
+    EuclideanMmsResult r = solveEuclideanMms(space, start, goal, mine);
+    t.mms[i] = r.rounds;
+    t.mmsSeconds[i] = r.seconds;
+  });
+  const double mmsWall = clock.seconds();
+  parallelFor(trials, o.threads, [&](size_t i) {
+    PrmSettings ps;
+    ps.maxMilestones = maxMilestones;
+    ps.seed = trialSeed(o.seed, 100 + si, i);
+    PrmResult r = solvePrmOnBoxes(space, start, goal, ps);
+    t.prm[i] = r.milestones;
+    t.prmSeconds[i] = r.seconds;
+  });
+  say(o, "completeness d = " + std::to_string(s.d) + ": " + std::to_string(trials) +
+             " MMS trials " + fmt(mmsWall, 2) + " s, PRM trials " +
+             fmt(clock.seconds() - mmsWall, 2) + " s");
+  return t;
+}
+
+// The dimension's row of completeness.md.
+void writeCompletenessRow(std::ostream& md, const DimSetup& s, const DimTrials& t, size_t maxRounds,
+                          size_t maxMilestones) {
+  const double eta = std::pow(2 * s.rho, s.d - s.k);
+  const double trials = double(t.mms.size());
+  const size_t boundN = theoremBound(s);
+  auto slope = logSlope(t.mms, maxRounds);
+  double mmsMs = 0, prmMs = 0;
+  for (double v : t.mmsSeconds) mmsMs += 1000 * v / trials;
+  for (double v : t.prmSeconds) prmMs += 1000 * v / trials;
+  md << "| " << s.d << " | " << s.k << " | " << s.rho << " | " << fmt(eta) << " | "
+     << fmt(0.1 * std::pow(2 * s.rho, s.d - 1)) << " | " << (slope ? fmt(*slope) : std::string("-"))
+     << " (" << fmt(std::log(1 - eta)) << ") | "
+     << orMore(samplesFor(t.mms, 0.1, maxRounds), maxRounds) << " / "
+     << orMore(samplesFor(t.mms, 0.01, maxRounds), maxRounds) << " | ~" << boundN << " | "
+     << fmt(mmsMs) << " | " << orMore(samplesFor(t.prm, 0.1, maxMilestones), maxMilestones) << " / "
+     << orMore(samplesFor(t.prm, 0.01, maxMilestones), maxMilestones) << " | " << fmt(prmMs)
+     << " |\n";
+}
+
+}  // namespace
+
 std::vector<LabFile> completenessLab(const LabOptions& o) {
   std::vector<DimSetup> setups = {
       {2, 1, 0.02}, {3, 2, 0.02}, {4, 2, 0.1}, {5, 3, 0.1}, {6, 3, 0.17}};
@@ -144,36 +206,9 @@ std::vector<LabFile> completenessLab(const LabOptions& o) {
         "<= 10 % / 1 % | PRM ms per trial |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (size_t si = 0; si < setups.size(); ++si) {
     const DimSetup& s = setups[si];
-    const BoxSpace space = wallWithHole(s.d, s.rho, 2 * s.d, o.seed);
-    const Point start = wallStart(s.d), goal = wallGoal(s.d);
-    std::vector<Outcome> mms(trials), prm(trials);
-    std::vector<double> mmsSeconds(trials), prmSeconds(trials);
-    Stopwatch clock;
-    EuclideanMmsSettings settings;
-    settings.families = perpendicularFamilies(s.d, s.k);
-    settings.maxRounds = maxRounds;
-    parallelFor(trials, o.threads, [&](size_t t) {
-      EuclideanMmsSettings mine = settings;
-      mine.seed = trialSeed(o.seed, si, t);
-      EuclideanMmsResult r = solveEuclideanMms(space, start, goal, mine);
-      mms[t] = r.rounds;
-      mmsSeconds[t] = r.seconds;
-    });
-    double mmsWall = clock.seconds();
-    parallelFor(trials, o.threads, [&](size_t t) {
-      PrmSettings ps;
-      ps.maxMilestones = maxMilestones;
-      ps.seed = trialSeed(o.seed, 100 + si, t);
-      PrmResult r = solvePrmOnBoxes(space, start, goal, ps);
-      prm[t] = r.milestones;
-      prmSeconds[t] = r.seconds;
-    });
-    say(o, "completeness d = " + std::to_string(s.d) + ": " + std::to_string(trials) +
-               " MMS trials " + fmt(mmsWall, 2) + " s, PRM trials " +
-               fmt(clock.seconds() - mmsWall, 2) + " s");
-
+    const DimTrials t = runDimTrials(o, s, si, trials, maxRounds, maxMilestones);
     const double eta = std::pow(2 * s.rho, s.d - s.k);
-    Series m{"d = " + std::to_string(s.d), seriesColour(si), failureCurve(mms, maxRounds, 75)};
+    Series m{"d = " + std::to_string(s.d), seriesColour(si), failureCurve(t.mms, maxRounds, 75)};
     Series pred{"", seriesColour(si), {}, true, false};
     for (size_t n = 0; n <= maxRounds; n += 5) {
       double f = std::pow(1 - eta, double(n));
@@ -183,27 +218,15 @@ std::vector<LabFile> completenessLab(const LabOptions& o) {
     mmsSeries.push_back(m);
     mmsSeries.push_back(pred);
     prmSeries.push_back(
-        {"d = " + std::to_string(s.d), seriesColour(si), failureCurve(prm, maxMilestones, 80)});
-    for (auto [n, f] : failureCurve(mms, maxRounds, maxRounds))
+        {"d = " + std::to_string(s.d), seriesColour(si), failureCurve(t.prm, maxMilestones, 80)});
+    for (auto [n, f] : failureCurve(t.mms, maxRounds, maxRounds))
       csv << "mms," << s.d << "," << s.k << "," << s.rho << "," << n << ","
           << size_t(std::lround(f * double(trials))) << "," << trials << "\n";
-    for (auto [n, f] : failureCurve(prm, maxMilestones, 200))
+    for (auto [n, f] : failureCurve(t.prm, maxMilestones, 200))
       csv << "prm," << s.d << "," << s.k << "," << s.rho << "," << n << ","
           << size_t(std::lround(f * double(trials))) << "," << trials << "\n";
 
-    const size_t boundN = theoremBound(s);
-    auto slope = logSlope(mms, maxRounds);
-    double mmsMs = 0, prmMs = 0;
-    for (double v : mmsSeconds) mmsMs += 1000 * v / double(trials);
-    for (double v : prmSeconds) prmMs += 1000 * v / double(trials);
-    md << "| " << s.d << " | " << s.k << " | " << s.rho << " | " << fmt(eta) << " | "
-       << fmt(0.1 * std::pow(2 * s.rho, s.d - 1)) << " | "
-       << (slope ? fmt(*slope) : std::string("-")) << " (" << fmt(std::log(1 - eta)) << ") | "
-       << orMore(samplesFor(mms, 0.1, maxRounds), maxRounds) << " / "
-       << orMore(samplesFor(mms, 0.01, maxRounds), maxRounds) << " | ~" << boundN << " | "
-       << fmt(mmsMs) << " | " << orMore(samplesFor(prm, 0.1, maxMilestones), maxMilestones) << " / "
-       << orMore(samplesFor(prm, 0.01, maxMilestones), maxMilestones) << " | " << fmt(prmMs)
-       << " |\n";
+    writeCompletenessRow(md, s, t, maxRounds, maxMilestones);
   }
   std::ostringstream head;
   head << "# mms lab completeness\n\n"
