@@ -55,6 +55,11 @@ SubspaceCells::SubspaceCells(const BoxSpace& space, AxisSubspace subspace, size_
         meets = b.lo[i] <= subspace_.point[i] && subspace_.point[i] <= b.hi[i];
     if (meets) meeting.push_back(&b);
   }
+  const size_t cells = makeGrid(meeting, maxCells);
+  labelComponents(blockedCells(meeting, cells));
+}
+
+size_t SubspaceCells::makeGrid(const std::vector<const Box*>& meeting, size_t maxCells) {
   const size_t k = subspace_.freeAxes.size();
   breaks_.resize(k);
   size_t cells = 1;
@@ -72,11 +77,15 @@ SubspaceCells::SubspaceCells(const BoxSpace& space, AxisSubspace subspace, size_
   }
   stride_.assign(k, 1);
   for (size_t j = 1; j < k; ++j) stride_[j] = stride_[j - 1] * (breaks_[j - 1].size() - 1);
+  return cells;
+}
 
-  // Block the cells inside each box: a box covers a contiguous index range per axis.
+// A box covers a contiguous index range per axis: the cells inside it are blocked.
+std::vector<char> SubspaceCells::blockedCells(const std::vector<const Box*>& meeting,
+                                              size_t cells) const {
+  const size_t k = subspace_.freeAxes.size();
   std::vector<char> blocked(cells, 0);
-  std::vector<size_t> lo(k), hi(k), idx(k), zero(k, 0), count(k);
-  for (size_t j = 0; j < k; ++j) count[j] = breaks_[j].size() - 1;
+  std::vector<size_t> lo(k), hi(k), idx(k);
   for (const Box* b : meeting) {
     for (size_t j = 0; j < k; ++j) {
       const std::vector<double>& br = breaks_[j];
@@ -99,12 +108,17 @@ SubspaceCells::SubspaceCells(const BoxSpace& space, AxisSubspace subspace, size_
       blocked[flat] = 1;
     } while (nextIndex(idx, lo, hi));
   }
+  return blocked;
+}
 
-  // Free cells sharing a face are one FSC.
+// Free cells sharing a face are one FSC; each FSC's representative is its first cell's centre.
+void SubspaceCells::labelComponents(const std::vector<char>& blocked) {
+  const size_t k = subspace_.freeAxes.size(), cells = blocked.size();
+  std::vector<size_t> idx(k, 0), zero(k, 0), count(k);
+  for (size_t j = 0; j < k; ++j) count[j] = breaks_[j].size() - 1;
   std::vector<size_t> rank(cells), parent(cells);
   boost::disjoint_sets<size_t*, size_t*> sets(rank.data(), parent.data());
   for (size_t c = 0; c < cells; ++c) sets.make_set(c);
-  std::fill(idx.begin(), idx.end(), 0);
   for (size_t c = 0; c < cells; ++c) {
     if (!blocked[c])
       for (size_t j = 0; j < k; ++j)

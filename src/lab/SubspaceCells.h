@@ -40,6 +40,12 @@ class SubspaceCells {
   const std::vector<std::vector<double>>& breaks() const { return breaks_; }
 
  private:
+  // The grid on the free axes (breaks_, stride_) from the faces of the boxes that meet the
+  // subspace; its number of cells.
+  size_t makeGrid(const std::vector<const Box*>& meeting, size_t maxCells);
+  std::vector<char> blockedCells(const std::vector<const Box*>& meeting, size_t cells) const;
+  void labelComponents(const std::vector<char>& blocked);
+
   AxisSubspace subspace_;
   std::vector<std::vector<double>> breaks_;  // per free axis: 0, the faces inside, 1
   std::vector<size_t> stride_;
