@@ -451,6 +451,26 @@ Command addAssemble(CLI::App& app) {
       run);
 }
 
+// What `mms scenario --help` says of each scene it writes.
+constexpr const char* kScenarioSummary =
+    "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
+    "random-polygons (--seed), assembly-1 and assembly-2 (--slack), a random test scene "
+    "(random: --seed, --robots, --obstacles), carry-turn (--seed: a gripper and the part it "
+    "holds turn together in a tight chamber), niche-swap (--seed: two robots swap the ends "
+    "of a corridor with a niche), niche-three (--seed: two robots cross a corridor in which a "
+    "third must wait in a niche), discs-swap (--seed: 4-5 discs round a block to each "
+    "other's places), discs-room (--seed, --robots: discs cross an open room among "
+    "obstacles), open-clutter (--seed: one or two L-shaped robots cross random "
+    "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor), doors "
+    "(--seed: a long robot lines up with the doors of 1-3 thin walls), keyhole (--seed, "
+    "--slack: a key passes a keyhole, turns a quarter in a chamber barely larger than its "
+    "turn, and leaves through a side slot), swallow (--seed, --slack: a U takes a part into "
+    "its mouth and turns half round about it in a bay barely larger than that turn), "
+    "disc-grid (--seed, --robots, --spacing: unit discs on a grid go to the same grid moved "
+    "aside), disc-triangles (--seed, --robots: unit discs among random triangles) or disc-box "
+    "(--seed, --robots: discs of radius 0.5 packed touching in a walled box, shuffled) or "
+    "warehouse (--seed, --robots: rectangular carts among shelves turn where there is room)";
+
 Command addScenario(CLI::App& app) {
   auto run = [](ScenarioArgs& a, const CLI::Option* slackOption) {
     claimStandardOutput({{a.output, "-o"}});
@@ -458,24 +478,7 @@ Command addScenario(CLI::App& app) {
     return scenario(a);
   };
   return command<ScenarioArgs>(
-      app, "scenario",
-      "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
-      "random-polygons (--seed), assembly-1 and assembly-2 (--slack), a random test scene "
-      "(random: --seed, --robots, --obstacles), carry-turn (--seed: a gripper and the part it "
-      "holds turn together in a tight chamber), niche-swap (--seed: two robots swap the ends "
-      "of a corridor with a niche), niche-three (--seed: two robots cross a corridor in which a "
-      "third must wait in a niche), discs-swap (--seed: 4-5 discs round a block to each "
-      "other's places), discs-room (--seed, --robots: discs cross an open room among "
-      "obstacles), open-clutter (--seed: one or two L-shaped robots cross random "
-      "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor), doors "
-      "(--seed: a long robot lines up with the doors of 1-3 thin walls), keyhole (--seed, "
-      "--slack: a key passes a keyhole, turns a quarter in a chamber barely larger than its "
-      "turn, and leaves through a side slot), swallow (--seed, --slack: a U takes a part into "
-      "its mouth and turns half round about it in a bay barely larger than that turn), "
-      "disc-grid (--seed, --robots, --spacing: unit discs on a grid go to the same grid moved "
-      "aside), disc-triangles (--seed, --robots: unit discs among random triangles) or disc-box "
-      "(--seed, --robots: discs of radius 0.5 packed touching in a walled box, shuffled) or "
-      "warehouse (--seed, --robots: rectangular carts among shelves turn where there is room)",
+      app, "scenario", kScenarioSummary,
       [](CLI::App* scenarioCmd, ScenarioArgs& sa) {
         scenarioCmd
             ->add_option("NAME", sa.name,
