@@ -30,6 +30,7 @@
 
 #include "baselines/UobprmSampler.h"
 #include "graph/RoadmapRecord.h"
+#include "util/Random.h"
 
 namespace mms {
 
@@ -187,7 +188,10 @@ class StampedMotions : public ob::MotionValidator {
 // walls, and RRT-Connect pays a nearest-neighbour search and a refused motion for each; a
 // collision test per redrawn sample costs less, and a point test first less still (most
 // redrawn samples put the robot's reference point in a wall: the sampler 0.8x on the bends and
-// 0.9x on the keyholes, same paths). Each robot is drawn again on its own until it
+// 0.9x on the keyholes, same paths). Its draws are its own (one 64-bit number per coordinate,
+// where OMPL's samplers take two 32-bit ones through std::generate_canonical) and a robot's
+// angle is drawn only once its reference point is clear: the same distribution, and the
+// sampler 0.8x again on the bends. Each robot is drawn again on its own until it
 // is clear of the obstacles, the others ignored: redrawing the whole configuration until no two
 // robots overlap made RRT-Connect 1.3x slower among discs (discs-swap, seeds 1-10). After kTries
 // draws a robot keeps the last, so a scene with almost no free space is sampled as before.
@@ -199,18 +203,36 @@ class FreeSampler : public ob::StateSampler {
       : ob::StateSampler(space),
         layout_(layout),
         checker_(checker),
-        compound_(space->allocDefaultStateSampler()) {
-    for (unsigned i = 0; i < space->getSubspaceCount(); ++i)
-      robots_.push_back(space->getSubspace(i)->allocStateSampler());
-  }
+        compound_(space->allocDefaultStateSampler()),
+        draws_(seedFrom(rng_)) {}
   void sampleUniform(ob::State* state) override {
     auto* c = state->as<ob::CompoundState>();
-    for (size_t i = 0; i < robots_.size(); ++i)
+    const Box& b = layout_.scene.bounds;
+    for (size_t i = 0; i < layout_.scene.robots.size(); ++i) {
+      const Robot& robot = layout_.scene.robots[i];
+      const bool rigid = robot.motion != Motion::Translate;
+      Pose p{0, 0, robot.start.theta};
+      bool angled = !rigid;  // a draw's angle is drawn only once its reference point is clear
       for (int k = 0; k < kTries; ++k) {
-        robots_[i]->sampleUniform(c->components[i]);
-        const Pose pose = layout_.pose(state, i);
-        if (!checker_.referenceBlocked(i, pose) && checker_.robotFree(i, pose)) break;
+        p.x = draws_.uniform(b.xmin, b.xmax);
+        p.y = draws_.uniform(b.ymin, b.ymax);
+        angled = !rigid;
+        if (checker_.referenceBlocked(i, p)) continue;
+        if (rigid) p.theta = draws_.uniform(-M_PI, M_PI);
+        angled = true;
+        if (checker_.robotFree(i, p)) break;
       }
+      if (!angled) p.theta = draws_.uniform(-M_PI, M_PI);  // the last draw's
+      if (rigid) {
+        auto* se2 = c->as<ob::SE2StateSpace::StateType>(i);
+        se2->setXY(p.x, p.y);
+        se2->setYaw(p.theta);
+      } else {
+        auto* rv = c->as<ob::RealVectorStateSpace::StateType>(i);
+        rv->values[0] = p.x;
+        rv->values[1] = p.y;
+      }
+    }
   }
   void sampleUniformNear(ob::State* state, const ob::State* near, double distance) override {
     compound_->sampleUniformNear(state, near, distance);
@@ -220,10 +242,15 @@ class FreeSampler : public ob::StateSampler {
   }
 
  private:
+  // The sampler's own stream, seeded from OMPL's (so from --seed).
+  static uint64_t seedFrom(ompl::RNG& rng) {
+    const auto half = [&] { return uint64_t(rng.uniformInt(0, 0x7fffffff)); };
+    return half() << 32 | half();
+  }
   const Layout& layout_;
   const CollisionChecker& checker_;
-  ob::StateSamplerPtr compound_;             // OMPL's, for samples near a state
-  std::vector<ob::StateSamplerPtr> robots_;  // one robot's component each
+  ob::StateSamplerPtr compound_;  // OMPL's, for samples near a state
+  Random draws_;
 };
 
 // KPIECE needs a projection: the robots' reference points (2-D for one robot, 4-D for two),

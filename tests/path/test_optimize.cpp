@@ -181,7 +181,10 @@ TEST(Optimize, ATurnBlockedWhereItWasMadeIsMadeTheShortWayWhereTheRobotSpins) {
 // to go down bit first, by another route through the slot (an exact slice at its angle), and
 // to turn about its centre held where the chamber is clearest.
 TEST(Optimize, AKeyThatTurnedTheLongWayIsRoutedToTurnTheShortWay) {
-  for (const uint64_t seed : {114, 116}) {
+  // The sampler's paths that turned the long way, among the first keyhole scenes of the fresh
+  // seeds (most do: the sampler draws the key's angle uniformly).
+  size_t routed = 0;
+  for (uint64_t seed = 100; seed < 120 && routed < 2; ++seed) {
     const Scene s = keyholeScene(seed);
     const PlanResult r =
         makePlanner("rrtconnect", s,
@@ -189,13 +192,15 @@ TEST(Optimize, AKeyThatTurnedTheLongWayIsRoutedToTurnTheShortWay) {
             ->solve(Termination(30));
     ASSERT_TRUE(r.found()) << seed;
     const double least = minimumRotation(s);
-    ASSERT_GT(rotationOf(r.waypoints, 0), 2.5 * least) << seed;
+    if (rotationOf(r.waypoints, 0) <= 2.5 * least) continue;
     std::vector<Config> w = r.waypoints;
     const OptimizeStats st = optimize(s, w);
     EXPECT_GT(st.slices, 0u) << seed;
     EXPECT_LE(rotationOf(w, 0), 1.05 * least) << seed;
     EXPECT_TRUE(certified(s, w)) << seed;
+    ++routed;
   }
+  EXPECT_EQ(routed, 2u);
 }
 
 // Rounds of shortcuts end once two in a row stop paying: a path optimised once is given two
