@@ -57,9 +57,11 @@ TEST(Ompl, EveryPlannerRunsAndOnlyCertifiedPathsAreFound) {
 // With motions certified as they are added, the trees and roadmaps hold certified paths: the
 // planners that ask only whether a motion is free (RRT-Connect, PRM) and those that keep its
 // certified beginning (RRT, KPIECE) find paths the certifier accepts, on one robot and two,
-// with uniform samples or samples redrawn until free (the portfolio's RRT-Connect).
+// with uniform samples or samples redrawn until free (the portfolio's RRT-Connect), also for
+// parts that only translate.
 TEST(Ompl, CertifiedMotionsGiveCertifiedPaths) {
-  for (const Scene& s : {openClutterScene(2), bendScene(3), randomPolygonsTwoRobots(3)}) {
+  for (const Scene& s : {openClutterScene(2), bendScene(3), randomPolygonsTwoRobots(3),
+                         loadScene(scenario("translating/cup.json"))}) {
     const CollisionChecker checker(s);
     for (const char* name : {"rrtconnect", "prm", "rrt", "kpiece"})
       for (const bool free : {false, true}) {
