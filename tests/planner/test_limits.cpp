@@ -370,7 +370,9 @@ TEST(Limits, ALongManifoldStillShowsProgress) {
   const test::Outcome r =
       test::runMms("plan " + test::quote(scene) + " --planner mms --time-limit " + limit + " -o " +
                    test::quote(dir.path("p.json")));
-  EXPECT_NE(r.err.find("mms plan: 5.0 s, "), std::string::npos) << r.err;
+  // The line comes at the heartbeat's first wake past 5 s: 5.0 s on an idle machine, 5.1 s
+  // and later under the sanitizers on a loaded one.
+  EXPECT_NE(r.err.find("mms plan: 5."), std::string::npos) << r.err;
 }
 
 }  // namespace mms
