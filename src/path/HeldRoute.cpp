@@ -7,8 +7,11 @@
 
 namespace mms {
 
-HeldRoutes::HeldRoutes(const Scene& scene, size_t maxSlices)
-    : scene_(scene), maxSlices_(scene.robots.size() == 1 && !scene.hasDiscs() ? maxSlices : 0) {}
+HeldRoutes::HeldRoutes(const Scene& scene, const CollisionChecker& checker, size_t maxSlices)
+    : scene_(scene),
+      checker_(checker),
+      maxSlices_(scene.robots.size() == 1 && !scene.hasDiscs() ? maxSlices : 0),
+      grid_{maxSlices_ > 0 ? checker.radius(0) / kCellsPerRadius : 0} {}
 
 HeldRoutes::~HeldRoutes() = default;
 
@@ -29,6 +32,10 @@ std::optional<std::vector<Vec2>> HeldRoutes::route(double theta, Vec2 a, Vec2 b,
                                                    const Termination& stop) {
   const StopScope scope(stop);
   if (stop()) return std::nullopt;
+  if (auto walked = gridRoute(checker_, scene_.bounds, theta, a, b, grid_, stop)) {
+    ++gridRoutes_;
+    return walked;
+  }
   const Slice* slice = sliceAt(theta);
   if (!slice) return std::nullopt;
   try {

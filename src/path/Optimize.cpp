@@ -35,6 +35,7 @@ class Optimizer final : detail::ShortWay {
     routing_ = false;
     if (s_.accepted > before) shortcutRounds(w);
     s_.slices = routes_.slicesBuilt();
+    s_.gridRoutes = routes_.gridRoutes();
     if (settings_.objective == PathObjective::Clearance) {
       limit_ = s_.evaluations * workPerEvaluation_ + settings_.maxWork;  // a budget of its own
       pushAwayFromContacts(w);

@@ -56,6 +56,7 @@ struct OptimizeStats {
   size_t checked = 0;      // candidate stretches given to the certifier
   size_t evaluations = 0;  // the certifier's evaluations for them (of all robots)
   size_t slices = 0;       // exact slices built to route a robot that turns the other way
+  size_t gridRoutes = 0;   // routes for it found on a grid instead (path/GridRoute.h)
   double seconds = 0;
 };
 

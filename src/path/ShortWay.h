@@ -19,8 +19,8 @@ class ShortWay : protected OptimizerCore {
   /// Each rigid robot's stretches turned the short way while one certifies.
   void turnShortWay(std::vector<Config>& w);
 
-  HeldRoutes routes_{scene_, 8};  // slices at most, per optimisation
-  bool routing_ = false;          // whether rewinds may route (the last pass)
+  HeldRoutes routes_{scene_, checker_, 8};  // slices at most, per optimisation
+  bool routing_ = false;                    // whether rewinds may route (the last pass)
 
  private:
   using Run = std::pair<size_t, size_t>;  // waypoints at the ends of a run of turning segments

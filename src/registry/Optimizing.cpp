@@ -86,6 +86,7 @@ class Optimizing final : public Planner {
     r.stats.counts.emplace_back("optimize_rounds", total.rounds);
     r.stats.counts.emplace_back("optimize_evaluations", total.evaluations);
     if (total.slices > 0) r.stats.counts.emplace_back("optimize_slices", total.slices);
+    if (total.gridRoutes > 0) r.stats.counts.emplace_back("optimize_grid_routes", total.gridRoutes);
     return r;
   }
 
@@ -125,6 +126,7 @@ class Optimizing final : public Planner {
     stats.evaluations += s.evaluations;
     stats.rounds += s.rounds;
     stats.slices += s.slices;
+    stats.gridRoutes += s.gridRoutes;
     stats.seconds += watch.seconds();
   }
 

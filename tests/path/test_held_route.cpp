@@ -1,6 +1,7 @@
-// Routes of a robot held at an angle through its exact free space: every point and every
-// segment of a route free by the collision checker (sampled densely), none between places the
-// walls part, and a route that needs the angle it was asked at.
+// Routes of a robot held at an angle, from the grid where it finds them and through the exact
+// free space where it does not: every point and every segment of a route free by the collision
+// checker (sampled densely), none between places the walls part, and a route that needs the
+// angle it was asked at.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,14 +13,14 @@ using namespace mms;
 
 namespace {
 
-// A bar (2 x 0.2) in a room split by a wall with a slot 0.4 wide: the bar passes lying across
-// the wall (along x), not along it.
-Scene slotted() {
+// A bar (2 x 0.2) in a room split by a wall with a slot `slot` wide: the bar passes lying
+// across the wall (along x), not along it.
+Scene slotted(double slot = 0.4) {
   Scene s;
   s.name = "slotted";
   s.bounds = {0, 0, 10, 6};
-  s.obstacles = {{{4.8, 0}, {5.2, 0}, {5.2, 2.8}, {4.8, 2.8}},
-                 {{4.8, 3.2}, {5.2, 3.2}, {5.2, 6}, {4.8, 6}}};
+  s.obstacles = {{{4.8, 0}, {5.2, 0}, {5.2, 3 - slot / 2}, {4.8, 3 - slot / 2}},
+                 {{4.8, 3 + slot / 2}, {5.2, 3 + slot / 2}, {5.2, 6}, {4.8, 6}}};
   Robot bar;
   bar.name = "bar";
   bar.shape = {{-1, -0.1}, {1, -0.1}, {1, 0.1}, {-1, 0.1}};
@@ -47,7 +48,8 @@ bool freeAlong(const Scene& s, const std::vector<Vec2>& route, double theta) {
 
 TEST(HeldRoute, ARouteThroughTheSlotIsFreeAtItsAngle) {
   const Scene s = slotted();
-  HeldRoutes routes(s, 4);
+  const CollisionChecker checker(s);
+  HeldRoutes routes(s, checker, 4);
   const Termination forever(60);
   const auto across = routes.route(0, {2, 1}, {8, 5}, forever);
   ASSERT_TRUE(across.has_value());
@@ -55,38 +57,60 @@ TEST(HeldRoute, ARouteThroughTheSlotIsFreeAtItsAngle) {
   EXPECT_DOUBLE_EQ(across->front().x, 2);
   EXPECT_DOUBLE_EQ(across->back().y, 5);
   EXPECT_TRUE(freeAlong(s, *across, 0));
-  // Upright the bar cannot pass the slot: the two sides are different cells.
+  // A slot twice the bar's width: the grid finds the way, no slice is built.
+  EXPECT_EQ(routes.gridRoutes(), 1u);
+  EXPECT_EQ(routes.slicesBuilt(), 0u);
+  // Upright the bar cannot pass the slot: the grid finds no way and the slice shows the two
+  // sides are different cells.
   EXPECT_FALSE(routes.route(M_PI / 2, {2, 3}, {8, 3}, forever).has_value());
+  EXPECT_EQ(routes.slicesBuilt(), 1u);
   // On one side it can go anywhere free upright.
   const auto upright = routes.route(M_PI / 2, {1, 1.5}, {3.5, 4.5}, forever);
   ASSERT_TRUE(upright.has_value());
   EXPECT_TRUE(freeAlong(s, *upright, M_PI / 2));
-  // An angle a whole turn away is the same slice.
-  EXPECT_EQ(routes.slicesBuilt(), 2u);
   EXPECT_TRUE(routes.route(2 * M_PI, {2, 1}, {8, 5}, forever).has_value());
-  EXPECT_EQ(routes.slicesBuilt(), 2u);
+}
+
+TEST(HeldRoute, ASlotTheGridMissesIsRoutedThroughTheSlice) {
+  // The bar's centre must pass within 0.01 of the slot's middle, between the grid's centres.
+  const Scene s = slotted(0.22);
+  const CollisionChecker checker(s);
+  HeldRoutes routes(s, checker, 4);
+  const Termination forever(60);
+  const auto across = routes.route(0, {2, 1}, {8, 5}, forever);
+  ASSERT_TRUE(across.has_value());
+  EXPECT_TRUE(freeAlong(s, *across, 0));
+  EXPECT_EQ(routes.gridRoutes(), 0u);
+  EXPECT_EQ(routes.slicesBuilt(), 1u);
+  // An angle a whole turn away is the same slice.
+  EXPECT_TRUE(routes.route(2 * M_PI, {2, 1}, {8, 5}, forever).has_value());
+  EXPECT_EQ(routes.slicesBuilt(), 1u);
 }
 
 TEST(HeldRoute, NoRouteFromAPlaceTheRobotDoesNotFit) {
   const Scene s = slotted();
-  HeldRoutes routes(s, 4);
+  const CollisionChecker checker(s);
+  HeldRoutes routes(s, checker, 4);
   const Termination forever(60);
   EXPECT_FALSE(routes.route(0, {5, 1}, {8, 5}, forever).has_value());    // in the wall
   EXPECT_FALSE(routes.route(0, {0.5, 3}, {8, 5}, forever).has_value());  // through the bounds
 }
 
 TEST(HeldRoute, SlicesAreBoundedAndAnEndedRunRoutesNothing) {
-  const Scene s = slotted();
-  HeldRoutes routes(s, 1);
+  const Scene s = slotted(0.22);
+  const CollisionChecker checker(s);
+  HeldRoutes routes(s, checker, 1);
   const Termination forever(60);
   EXPECT_TRUE(routes.route(0, {2, 1}, {8, 5}, forever).has_value());
-  EXPECT_FALSE(routes.route(M_PI / 2, {1, 1.5}, {3.5, 4.5}, forever).has_value());  // spent
-  HeldRoutes fresh(s, 4);
+  EXPECT_FALSE(routes.route(M_PI, {2, 1}, {8, 5}, forever).has_value());  // spent
+  // Where the grid finds the way, spent slices do not matter.
+  EXPECT_TRUE(routes.route(M_PI / 2, {1, 1.5}, {3.5, 4.5}, forever).has_value());
+  HeldRoutes fresh(s, checker, 4);
   EXPECT_FALSE(fresh.route(0, {2, 1}, {8, 5}, Termination(0)).has_value());
   // Two robots: nothing is routed (their slices would hold the other robot).
   Scene two = s;
   two.robots.push_back(s.robots[0]);
   two.robots[1].name = "other";
   two.robots[1].start = two.robots[1].goal = {8, 1, 0};
-  EXPECT_FALSE(HeldRoutes(two, 4).routes());
+  EXPECT_FALSE(HeldRoutes(two, CollisionChecker(two), 4).routes());
 }
