@@ -214,8 +214,9 @@ class FreeSampler : public ob::StateSampler {
       Pose p{0, 0, robot.start.theta};
       bool angled = !rigid;  // a draw's angle is drawn only once its reference point is clear
       for (int k = 0; k < kTries; ++k) {
-        p.x = draws_.uniform(b.xmin, b.xmax);
-        p.y = draws_.uniform(b.ymin, b.ymax);
+        const Vec2 at = draws_.uniformIn(b);
+        p.x = at.x;
+        p.y = at.y;
         angled = !rigid;
         if (checker_.referenceBlocked(i, p)) continue;
         if (rigid) p.theta = draws_.uniform(-M_PI, M_PI);

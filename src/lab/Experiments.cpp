@@ -126,10 +126,6 @@ size_t theoremBound(const DimSetup& s) {
   return n;
 }
 
-}  // namespace
-
-namespace {
-
 // One dimension's trials of MMS and of PRM, each outcome with its time.
 struct DimTrials {
   std::vector<Outcome> mms, prm;

@@ -9,7 +9,7 @@ namespace mms {
 std::optional<Vec2> samplePointInCell(const Slice& slice, size_t cell, Random& rng, int tries) {
   const Box b = boundingBox(slice.cell(cell).front());
   for (int i = 0; i < tries; ++i) {
-    const Vec2 p{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax)};
+    const Vec2 p = rng.uniformIn(b);
     if (slice.locate(p) == int(cell)) return p;
   }
   return std::nullopt;

@@ -48,7 +48,7 @@ bool UniformFixings::grow(size_t robot, FixingHost& host, const Termination& sto
   Random& rng = host.rng();
   for (int attempt = 0; attempt < 200; ++attempt) {
     const size_t k = rng.below(base.size());
-    const Vec2 p{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax)};
+    const Vec2 p = rng.uniformIn(b);
     if (base[k].locate(p) < 0) continue;
     host.hold(host.fixingAt(robot, k, p, -1), stop);
     return true;
@@ -93,7 +93,7 @@ bool ConnectChains::grow(size_t robot, FixingHost& host, const Termination& stop
   const Roadmap& roadmap = host.roadmap();
   const size_t root = size_t(rng.uniform() < 0.5 ? host.startNode() : host.goalNode());
   const Box& b = host.bounds();
-  const Vec2 q{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax)};
+  const Vec2 q = rng.uniformIn(b);
   const Box target{q.x, q.y, q.x, q.y};
   long node = -1;
   double nearest = INFINITY;

@@ -65,7 +65,6 @@ OneRobotPlanner::~OneRobotPlanner() = default;
 
 Vec2 OneRobotPlanner::nextLinePoint() {
   const Box& b = scene_.bounds;
-  auto uniform = [&] { return Vec2{rng_.uniform(b.xmin, b.xmax), rng_.uniform(b.ymin, b.ymax)}; };
   // Part of the points where some slice has room for the robot: lines there can connect.
   if (!slices().empty() && rng_.uniform() < settings_.freeLineShare) {
     // Near a vertex of a cell: a placement touching two features (a corridor's corner), where
@@ -77,11 +76,11 @@ Vec2 OneRobotPlanner::nextLinePoint() {
     }
     for (int attempt = 0; attempt < 20; ++attempt) {
       const Slice& s = slices()[rng_.below(slices().size())];
-      const Vec2 p = uniform();
+      const Vec2 p = rng_.uniformIn(b);
       if (s.locate(p) >= 0) return p;
     }
   }
-  return uniform();
+  return rng_.uniformIn(b);
 }
 
 void OneRobotPlanner::addPivotLines(const Pose& start, const Pose& goal) {

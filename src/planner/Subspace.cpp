@@ -59,13 +59,12 @@ bool cutsNoPassage(const Slice& base, const MovedShape& held) {
 }
 
 Vec2 subspaceLinePoint(const std::vector<Slice>& base, const Box& b, Random& rng) {
-  auto uniform = [&] { return Vec2{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax)}; };
   if (rng.uniform() < 0.5)
     for (int attempt = 0; attempt < 20; ++attempt) {
-      const Vec2 p = uniform();
+      const Vec2 p = rng.uniformIn(b);
       if (base[rng.below(base.size())].locate(p) >= 0) return p;
     }
-  return uniform();
+  return rng.uniformIn(b);
 }
 
 std::vector<double> narrowArcMiddles(std::span<const Line> lines, const LineWorld& alone,

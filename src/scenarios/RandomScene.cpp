@@ -42,7 +42,8 @@ bool placeRobot(Random& rng, const Scene& scene, const CollisionChecker& checker
   const Box& b = scene.bounds;
   const Robot& r = scene.robots[i];
   for (int t = 0; t < tries; ++t) {
-    Pose p{rng.uniform(b.xmin, b.xmax), rng.uniform(b.ymin, b.ymax), rng.uniform(-M_PI, M_PI)};
+    const Vec2 at = rng.uniformIn(b);
+    Pose p{at.x, at.y, rng.uniform(-M_PI, M_PI)};
     if (r.motion == Motion::Translate && goal) p.theta = r.start.theta;
     if (!checker.robotFree(i, p)) continue;
     bool clear = true;
@@ -77,8 +78,7 @@ Scene randomScene(const RandomSceneSettings& s) {
       scene.obstacles.push_back(latticeRectangle(rng, lattice));
     } else {
       // Anywhere, possibly overlapping each other or reaching past the bounds.
-      const Vec2 c{rng.uniform(scene.bounds.xmin, scene.bounds.xmax),
-                   rng.uniform(scene.bounds.ymin, scene.bounds.ymax)};
+      const Vec2 c = rng.uniformIn(scene.bounds);
       // Smaller when there are many, so that hundreds still leave room to move.
       const double r = std::min(w, h) * rng.uniform(0.03, 0.15) * crowding;
       scene.obstacles.push_back(randomStarPolygon(rng, c, 0.3 * r, r, 3 + int(rng.below(10))));

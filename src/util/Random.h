@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "mms/Geometry.h"
+
 namespace mms {
 
 class Random {
@@ -14,6 +16,11 @@ class Random {
   /// Uniform in [0, 1).
   double uniform() { return double(engine_() >> 11) * 0x1.0p-53; }
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+  /// Uniform in the box: x drawn first, then y.
+  Vec2 uniformIn(const Box& b) {
+    const double x = uniform(b.xmin, b.xmax);
+    return {x, uniform(b.ymin, b.ymax)};
+  }
   /// Uniform integer in [0, n).
   uint64_t below(uint64_t n) { return uint64_t(uniform() * double(n)) % n; }
   uint64_t bits() { return engine_(); }
