@@ -31,6 +31,23 @@ inline std::string scenario(const std::string& rel) { return sourceDir() + "/sce
 /// The axis-aligned rectangle [x0, x1] x [y0, y1], counter-clockwise: the generators' own.
 using mms::rect;
 
+/// A bar (2 x 0.2) in a room (10 x 6) split by a wall 0.4 thick with a slot `slot` wide about
+/// height 3: the bar passes lying across the wall (along x), not along it, when the slot is
+/// wider than the bar.
+inline Scene slottedBarScene(double slot) {
+  Scene s;
+  s.name = "slotted";
+  s.bounds = {0, 0, 10, 6};
+  s.obstacles = {rect(4.8, 0, 5.2, 3 - slot / 2), rect(4.8, 3 + slot / 2, 5.2, 6)};
+  Robot bar;
+  bar.name = "bar";
+  bar.shape = rect(-1, -0.1, 1, 0.1);
+  bar.start = {2, 3, 0};
+  bar.goal = {8, 3, 0};
+  s.robots = {bar};
+  return s;
+}
+
 /// A wall across the whole box parts the left half from the right; robot "a" only translates
 /// and has its goal across the wall, so no motion exists. The other robots (rigid squares,
 /// `robots` in all) have room enough on the left.

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "Support.h"
 #include "check/PathChecker.h"
 #include "geometry/CollisionChecker.h"
 #include "path/GridRoute.h"
@@ -14,21 +15,7 @@ using namespace mms;
 
 namespace {
 
-// A bar (2 x 0.2) in a room split by a wall with a gap `gap` wide at height 3.
-Scene walled(double gap) {
-  Scene s;
-  s.name = "walled";
-  s.bounds = {0, 0, 10, 6};
-  s.obstacles = {{{4.8, 0}, {5.2, 0}, {5.2, 3 - gap / 2}, {4.8, 3 - gap / 2}},
-                 {{4.8, 3 + gap / 2}, {5.2, 3 + gap / 2}, {5.2, 6}, {4.8, 6}}};
-  Robot bar;
-  bar.name = "bar";
-  bar.shape = {{-1, -0.1}, {1, -0.1}, {1, 0.1}, {-1, 0.1}};
-  bar.start = {2, 3, 0};
-  bar.goal = {8, 3, 0};
-  s.robots = {bar};
-  return s;
-}
+Scene walled(double gap) { return test::slottedBarScene(gap); }
 
 bool freeAlong(const CollisionChecker& checker, const std::vector<Vec2>& route, double theta) {
   for (size_t k = 1; k < route.size(); ++k) {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "Support.h"
 #include "geometry/CollisionChecker.h"
 #include "path/HeldRoute.h"
 
@@ -13,22 +14,7 @@ using namespace mms;
 
 namespace {
 
-// A bar (2 x 0.2) in a room split by a wall with a slot `slot` wide: the bar passes lying
-// across the wall (along x), not along it.
-Scene slotted(double slot = 0.4) {
-  Scene s;
-  s.name = "slotted";
-  s.bounds = {0, 0, 10, 6};
-  s.obstacles = {{{4.8, 0}, {5.2, 0}, {5.2, 3 - slot / 2}, {4.8, 3 - slot / 2}},
-                 {{4.8, 3 + slot / 2}, {5.2, 3 + slot / 2}, {5.2, 6}, {4.8, 6}}};
-  Robot bar;
-  bar.name = "bar";
-  bar.shape = {{-1, -0.1}, {1, -0.1}, {1, 0.1}, {-1, 0.1}};
-  bar.start = {2, 3, 0};
-  bar.goal = {8, 3, 0};
-  s.robots = {bar};
-  return s;
-}
+Scene slotted(double slot = 0.4) { return test::slottedBarScene(slot); }
 
 // Whether the robot at `theta` is free at every point of the route and at 50 points along each
 // of its segments.
