@@ -16,7 +16,34 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Piece {
   double s0, s1;
+  bool certified = false;  // by the evaluation of a larger piece (certifiedPrefix)
 };
+
+/// How far from a piece's middle its evaluation certified the motion although it did not certify
+/// the whole piece: an item (a robot against the bounds, an obstacle or another robot) at
+/// `distance` keeps clear while |s - mid| < distance / rate, which is half * distance / bound
+/// since its bound over the piece is half * rate. A hair less, for the rounding of the poses.
+class Reach {
+ public:
+  explicit Reach(double half) : reach_(half) {}
+  void see(double distance, double bound, double half) {
+    if (distance <= bound && bound > 0)
+      reach_ = std::min(reach_, std::max(0.0, kShare * half * distance / bound));
+  }
+  double operator()() const { return reach_; }
+
+ private:
+  static constexpr double kShare = 1 - 1e-6;
+  double reach_;
+};
+
+/// What is left of a piece to certify once an evaluation at its middle certified `reach` on
+/// either side: pushed onto `pieces` right first, so that a stack visits them left to right.
+/// Each is at most half the piece, so pieces shrink as fast as halving them would.
+void pushRest(std::vector<Piece>& pieces, const Piece& p, double mid, double reach) {
+  if (mid + reach < p.s1) pieces.push_back({mid + reach, p.s1});
+  if (mid - reach > p.s0) pieces.push_back({p.s0, mid - reach});
+}
 
 std::string num(double v) {
   std::ostringstream s;
@@ -231,8 +258,7 @@ class Certifier {
             why() + " (clearance below the contact tolerance " + num(checker_.tolerance()) + ")";
         continue;
       }
-      stack.push_back({mid, p.s1});
-      stack.push_back({p.s0, mid});
+      pushRest(stack, p, mid, reach_);
     }
     if (failAt >= 0) return fail(failAt, failWhy);
     certifiedEnd_ = &b;
@@ -274,23 +300,27 @@ class Certifier {
       return Status::Collision;
     }
     Status st = Status::Certified;
+    Reach reach(half);
     // What is hit is recorded, not described: most evaluations are certified or subdivided,
     // and a message per evaluation cost more than the clearance (the text is made on failure).
     // Every distance is seen: the report's smallest clearance is over all of them.
     auto note = [&](double distance, double bound, size_t robot, const Contact& other) {
       r_.minClearance = std::min(r_.minClearance, std::max(0.0, distance - checker_.tolerance()));
+      reach.see(distance, bound, half);
       if (st == Status::Collision || distance > bound) return true;
       st = distance <= 0 ? Status::Collision : Status::Uncertified;
       hit_ = {robot, other};
       return true;
     };
-    // Beyond both the displacement bound and the smallest clearance so far, the exact distance
-    // changes nothing: a distance just past them stands in for it, and far obstacles and
-    // robots cost a box test per edge.
+    // Beyond both the displacement bound and the smallest clearance so far (or the bound alone,
+    // when no clearance is measured), the exact distance changes nothing: a distance just past
+    // them stands in for it, and far obstacles and robots cost a box test per edge.
     auto enough = [&](double bound) {
+      if (!settings_.measureClearance) return std::nextafter(bound, kInf);
       return std::nextafter(std::max(bound, r_.minClearance + checker_.tolerance()), kInf);
     };
     motion_.evaluate(s, half, movingOnly, enough, note);
+    reach_ = reach();
     return st;
   }
 
@@ -306,6 +336,7 @@ class Certifier {
   size_t index_ = 0;
   StraightMotion motion_;
   std::vector<Piece> stack_;
+  double reach_ = 0;  // what the last evaluation certified on either side of its pose
   bool budgetExceeded_ = false;
   std::string budgetWhy_;
   struct Hit {
@@ -413,7 +444,9 @@ class MotionTest {
     return !hit;
   }
   /// Robots that stay put, at s = 0 (free of contact).
-  bool stillOnesFree() const { return evaluate(0.0, 0.0, false) != Status::Collision; }
+  bool stillOnesFree() { return evaluate(0.0, 0.0, false) != Status::Collision; }
+  /// How far on either side of the last piece's middle its evaluation certified the motion.
+  double reach() const { return reach_; }
   /// The moving robots over [mid - half, mid + half].
   Status piece(double mid, double half) {
     if (++evaluations_ > budget_) return Status::Refused;
@@ -430,8 +463,9 @@ class MotionTest {
     return motion;
   }
   /// Stops at the first contact; only whether a distance is within its bound matters.
-  Status evaluate(double s, double half, bool movingOnly) const {
+  Status evaluate(double s, double half, bool movingOnly) {
     Status st = Status::Certified;
+    Reach reach(half);
     auto justPast = [](double bound) { return std::nextafter(bound, kInf); };
     motion_.evaluate(s, half, movingOnly, justPast,
                      [&](double distance, double bound, size_t, const Contact&) {
@@ -439,15 +473,18 @@ class MotionTest {
                          st = Status::Collision;
                          return false;
                        }
+                       reach.see(distance, bound, half);
                        if (distance <= bound) st = Status::Uncertified;
                        return true;
                      });
+    reach_ = reach();
     return st;
   }
 
   const CollisionChecker& checker_;
   StraightMotion& motion_;
   size_t budget_ = 0, evaluations_ = 0;
+  double reach_ = 0;
 };
 
 }  // namespace
@@ -471,10 +508,7 @@ bool motionFree(const CollisionChecker& checker, const Config& a, const Config& 
     const double half = 0.5 * (p.s1 - p.s0), mid = p.s0 + half;
     const MotionTest::Status st = test.piece(mid, half);
     if (st == MotionTest::Status::Collision || st == MotionTest::Status::Refused) return false;
-    if (st == MotionTest::Status::Uncertified) {
-      queue.push_back({p.s0, mid});
-      queue.push_back({mid, p.s1});
-    }
+    if (st == MotionTest::Status::Uncertified) pushRest(queue, p, mid, test.reach());
   }
   return true;
 }
@@ -485,7 +519,7 @@ double certifiedPrefix(const CollisionChecker& checker, const Config& a, const C
   // Depth first, left to right: the certified pieces join up from 0. After a collision only
   // what lies before it is searched further. Where the certified beginning ends a robot may
   // all but touch something, and a motion from there could not be certified again (pieces
-  // would need to be shorter than the tolerance): the answer is the middle of the last
+  // would need to be shorter than the tolerance): the answer is the furthest point of the last
   // certified piece at which every moving robot keeps the tolerance's clearance.
   thread_local std::vector<Piece> stack;
   stack.assign(1, {0.0, 1.0});
@@ -495,17 +529,26 @@ double certifiedPrefix(const CollisionChecker& checker, const Config& a, const C
     stack.pop_back();
     if (p.s0 >= collision) continue;
     const double half = 0.5 * (p.s1 - p.s0), mid = p.s0 + half;
-    const MotionTest::Status st = test.piece(mid, half);
+    const MotionTest::Status st =
+        p.certified ? MotionTest::Status::Certified : test.piece(mid, half);
     if (st == MotionTest::Status::Refused) return clear;
     if (st == MotionTest::Status::Certified) {
       if (p.s1 == 1) return 1;
-      if (half * test.minRate() >= checker.tolerance()) clear = mid;
+      // Each moving robot is more than half * its rate away from anything at mid, and loses at
+      // most its rate per unit of s: twice the tolerance short of the piece's end it keeps twice
+      // the tolerance.
+      const double tol = checker.tolerance(), rate = test.minRate();
+      if (half * rate >= tol) clear = mid + std::max(0.0, half - 2 * tol / rate);
     } else if (st == MotionTest::Status::Collision) {
       collision = mid;
       stack.push_back({p.s0, mid});
     } else {
-      stack.push_back({mid, p.s1});
-      stack.push_back({p.s0, mid});
+      // What the evaluation certified about its pose is visited in its turn, as a piece of its
+      // own: its middle may be the answer.
+      const double r = test.reach();
+      if (mid + r < p.s1) stack.push_back({mid + r, p.s1});
+      stack.push_back({std::max(p.s0, mid - r), std::min(p.s1, mid + r), true});
+      if (mid - r > p.s0) stack.push_back({p.s0, mid - r});
     }
   }
   return clear;

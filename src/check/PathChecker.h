@@ -20,6 +20,10 @@ struct PathCheckSettings {
   /// Clearance evaluations allowed over the whole path; a path that slides along contacts
   /// for long stretches needs pieces as short as the tolerance and may run out of them.
   size_t maxEvaluations = 20'000'000;
+  /// Whether the result's minClearance is the smallest clearance of every pose evaluated. Off,
+  /// distances are computed only as far as certifying needs (a far obstacle costs a box test),
+  /// and minClearance is only an upper bound of the path's clearance.
+  bool measureClearance = true;
 };
 
 /// Checks that the path starts at the scene's start, ends at its goal, keeps translate-only

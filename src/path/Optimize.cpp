@@ -74,14 +74,18 @@ class Optimizer final : detail::ShortWay {
     bool inserted;
     Config q;
   };
-  static At at(const std::vector<Config>& w, const std::vector<double>& cum, double s) {
+  // Into `out`, whose pose keeps its storage from one attempt to the next.
+  static void at(const std::vector<Config>& w, const std::vector<double>& cum, double s, At& out) {
     size_t j = size_t(std::upper_bound(cum.begin(), cum.end(), s) - cum.begin());
     j = std::clamp<size_t>(j, 1, w.size() - 1);  // s lies on segment (j - 1, j)
     const double length = cum[j] - cum[j - 1];
     const double t = length > 0 ? (s - cum[j - 1]) / length : 0;
-    if (t <= 1e-9) return {j - 1, false, w[j - 1]};
-    if (t >= 1 - 1e-9) return {j, false, w[j]};
-    return {j, true, lerp(w[j - 1], w[j], t)};
+    out.inserted = t > 1e-9 && t < 1 - 1e-9;
+    out.k = t <= 1e-9 ? j - 1 : j;
+    if (out.inserted)
+      lerp(w[j - 1], w[j], t, out.q);
+    else
+      out.q = w[out.k];
   }
 
   // One attempt: two random points of the path, joined straight (all of every robot when
@@ -99,7 +103,9 @@ class Optimizer final : detail::ShortWay {
     if (rng_.below(8) == 0) s1 = 0;
     if (rng_.below(8) == 0) s2 = total;  // to the end, whose angle may change by a full turn
     if (s2 - s1 < 1e-9 * total) return;
-    Stretch st{at(w, cum, s1), at(w, cum, s2), 0, 0, 0, {}};
+    Stretch& st = stretch_;
+    at(w, cum, s1, st.from);
+    at(w, cum, s2, st.to);
     st.begin = st.from.inserted ? st.from.k : st.from.k + 1;
     st.end = st.to.k;  // the waypoints strictly between the two points: [begin, end)
     if (st.end + 1 <= st.begin) return;  // both points are one waypoint
@@ -109,7 +115,10 @@ class Optimizer final : detail::ShortWay {
       for (size_t r = 0; r < scene_.robots.size(); ++r) aimEnd(w, st, r);
       const double newCost = segmentCost(checker_, st.from.q, st.aimed);
       if (newCost >= st.oldCost - settings_.minStep * total) return;
-      if (!certified({st.from.q, st.aimed})) return;
+      candidate_.resize(2);
+      candidate_[0] = st.from.q;
+      candidate_[1] = st.aimed;
+      if (!certified(candidate_)) return;
       w.erase(w.begin() + long(st.begin), w.begin() + long(st.end));
     } else if (!partialShortcut(w, st, total)) {
       return;
@@ -159,7 +168,9 @@ class Optimizer final : detail::ShortWay {
     if (part != Part::Translation) aimEnd(w, st, robot);
     // The robot's own poses along the stretch, before and after: the others' cost is the same.
     const Pose a = poseOf(st.from.q, robot), b = poseOf(st.aimed, robot);
-    std::vector<Pose> before{a}, after{a};
+    std::vector<Pose>&before = before_, &after = after_;
+    before.assign(1, a);
+    after.assign(1, a);
     const std::vector<double>& cum = cumulativeCost(w);
     const double lead = segmentCost(checker_, st.from.q, w[st.begin]);
     for (size_t k = st.begin; k < st.end; ++k) {
@@ -174,15 +185,17 @@ class Optimizer final : detail::ShortWay {
     after.push_back(b);
     if (robotCost(after, robot) >= robotCost(before, robot) - settings_.minStep * total)
       return false;
-    std::vector<Config> stretch{st.from.q};
-    stretch.reserve(st.end - st.begin + 2);
+    // Assigned, not built: each pose keeps its storage from one attempt to the next.
+    std::vector<Config>& stretch = candidate_;
+    stretch.resize(st.end - st.begin + 2);
+    stretch.front() = st.from.q;
     for (size_t k = st.begin; k < st.end; ++k) {
-      stretch.push_back(w[k]);
-      setPose(stretch.back(), robot, after[k - st.begin + 1]);
+      stretch[k - st.begin + 1] = w[k];
+      setPose(stretch[k - st.begin + 1], robot, after[k - st.begin + 1]);
     }
-    stretch.push_back(st.aimed);
+    stretch.back() = st.aimed;
     if (!certified(stretch, robot)) return false;
-    for (size_t k = st.begin; k < st.end; ++k) w[k] = std::move(stretch[k - st.begin + 1]);
+    for (size_t k = st.begin; k < st.end; ++k) w[k] = stretch[k - st.begin + 1];
     return true;
   }
 
@@ -220,7 +233,7 @@ class Optimizer final : detail::ShortWay {
   }
 
   double clearanceAt(const Config& q) {
-    const PathCheckResult r = check({q});
+    const PathCheckResult r = check({q}, /*measureClearance=*/true);
     return r.ok ? r.minClearance : -1;
   }
 
@@ -246,9 +259,9 @@ class Optimizer final : detail::ShortWay {
         q[3 * robot + 2] += rng_.uniform(-1, 1) * step[k] / std::max(1.0, checker_.radius(robot));
       const std::vector<Config> before{w[k - 1], w[k], w[k + 1]}, after{w[k - 1], q, w[k + 1]};
       ++s_.checked;
-      const PathCheckResult now = check(after);
+      const PathCheckResult now = check(after, /*measureClearance=*/true);
       if (!now.ok || clearanceAt(q) <= clearanceAt(w[k]) ||
-          now.minClearance < check(before).minClearance) {
+          now.minClearance < check(before, /*measureClearance=*/true).minClearance) {
         step[k] *= 0.7;
         continue;
       }
@@ -259,6 +272,10 @@ class Optimizer final : detail::ShortWay {
   }
 
   static constexpr size_t kWeakRounds = 2;  // rounds in a row that do not pay, to stop
+  // An attempt's scratch, kept between attempts: thousands of attempts allocated a pose each.
+  Stretch stretch_;
+  std::vector<Config> candidate_;
+  std::vector<Pose> before_, after_;
 };
 
 }  // namespace

@@ -7,15 +7,17 @@ namespace mms::detail {
 
 // One robot's cost from pose a to pose b.
 double poseCost(const CollisionChecker& checker, size_t robot, const Pose& a, const Pose& b) {
-  return std::hypot(b.x - a.x, b.y - a.y) + checker.radius(robot) * std::fabs(b.theta - a.theta);
+  // Not hypot, a call into libm that the optimiser's attempts made thousands of times: a cost
+  // needs no guard against overflow.
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return std::sqrt(dx * dx + dy * dy) + checker.radius(robot) * std::fabs(b.theta - a.theta);
 }
 
 double segmentCost(const CollisionChecker& checker, const Config& a, const Config& b) {
   double c = 0;
   for (size_t i = 0; 3 * i < a.size(); ++i) {
     const Pose p = poseOf(a, i), q = poseOf(b, i);
-    // Robots that stay put add exactly 0: among hundreds moved one at a time most do, and
-    // hypot is a call into libm.
+    // Robots that stay put add exactly 0: among hundreds moved one at a time most do.
     if (p.x == q.x && p.y == q.y && p.theta == q.theta) continue;
     c += poseCost(checker, i, p, q);
   }
@@ -29,6 +31,8 @@ OptimizerCore::OptimizerCore(const Scene& scene, const CollisionChecker& checker
   // A candidate stretch is short; one that needs more evaluations slides along contacts and
   // is not worth the time.
   quick_.maxEvaluations = settings.candidateEvaluations;
+  quick_.measureClearance = false;  // (only the clearance objective reads it)
+  measured_.maxEvaluations = settings.candidateEvaluations;
   // Robots that are all discs are certified at once per segment (a swept stadium): the middle
   // pose alone, as a probe, then costs less than more of them.
   double r = std::numeric_limits<double>::infinity();
@@ -41,8 +45,9 @@ OptimizerCore::OptimizerCore(const Scene& scene, const CollisionChecker& checker
   probeSpacing_ = 0.5 * r;
 }
 
-PathCheckResult OptimizerCore::check(const std::vector<Config>& stretch) {
-  const PathCheckResult r = checkMotion(scene_, checker_, stretch, quick_);
+PathCheckResult OptimizerCore::check(const std::vector<Config>& stretch, bool measureClearance) {
+  const PathCheckResult r =
+      checkMotion(scene_, checker_, stretch, measureClearance ? measured_ : quick_);
   s_.evaluations += r.evaluations;
   return r;
 }

@@ -25,7 +25,8 @@ class OptimizerCore {
   // Out of work: the attempts' evaluations are spent, or the time limit struck.
   bool done() const { return s_.evaluations * workPerEvaluation_ >= limit_ || stop_(); }
 
-  PathCheckResult check(const std::vector<Config>& stretch);
+  /// The certifier on a stretch; its minClearance is measured only when asked.
+  PathCheckResult check(const std::vector<Config>& stretch, bool measureClearance = false);
   static constexpr size_t kEveryRobot = size_t(-1);
   /// Whether the stretch is probed free and then certified. `moved`: the only robot whose
   /// motion differs from the certified path's (the others follow it), so that the probes test
@@ -53,8 +54,8 @@ class OptimizerCore {
   std::vector<double> probeCost_;  // probedFree's, per segment
   Config probe_;                   // probedFree's pose
   double probeSpacing_ = 0;
-  PathCheckSettings quick_;
-  std::vector<double> cum_;  // cumulativeCost's, for the path at `cumVersion_`
+  PathCheckSettings quick_, measured_;  // without and with the clearance measured
+  std::vector<double> cum_;             // cumulativeCost's, for the path at `cumVersion_`
   size_t version_ = 0, cumVersion_ = size_t(-1);
 };
 
