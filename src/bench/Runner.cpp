@@ -20,6 +20,7 @@
 #include <sstream>
 #include <thread>
 
+#include "bench/ChildExit.h"
 #include "bench/Report.h"
 #include "io/AnyScene.h"
 #include "io/RunSummary.h"
@@ -388,8 +389,7 @@ class Schedule {
     while ((next_ < jobs_.size() || !running_.empty()) && !interrupted()) {
       startWhatFits();
       if (running_.empty()) break;
-      // A run's wall time is known to this step: 1 ms against runs of 20 ms and more.
-      if (!reapOne()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      if (!reapOne()) awaitAnExit();
     }
     BenchOutcome outcome{finished_, skipped_, notRun_, false, runsFile};
     if (interrupted()) {
@@ -408,7 +408,22 @@ class Schedule {
     pid_t pid;
     std::chrono::steady_clock::time_point started;
     std::string stats;
+    ChildExit exit;
   };
+
+  // Until a run ends, or the next run's limit and grace pass (it is then killed), or soon
+  // enough to see Ctrl-C.
+  void awaitAnExit() const {
+    double until = 0.05;
+    std::vector<int> fds;
+    const auto now = std::chrono::steady_clock::now();
+    for (const Running& r : running_) {
+      fds.push_back(r.exit.fd());
+      const double elapsed = std::chrono::duration<double>(now - r.started).count();
+      until = std::min(until, a_.timeLimit + grace_ - elapsed);
+    }
+    awaitChildExit(fds, until);
+  }
 
   bool interrupted() const { return (cancel_ && cancel_->load()) || childInterrupted_; }
 
@@ -444,11 +459,12 @@ class Schedule {
           std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
               .count();
       Running r{job, 0, std::chrono::steady_clock::now(),
-                tmp_ + "/run-" + std::to_string(next_) + ".json"};
+                tmp_ + "/run-" + std::to_string(next_) + ".json", ChildExit()};
       fs::remove(r.stats);
       r.job.args.push_back("--stats-json");
       r.job.args.push_back(r.stats);
       r.pid = start(a_.executable, r.job, a_.memoryMb);
+      r.exit = ChildExit(r.pid);
       running_.push_back(std::move(r));
     }
   }

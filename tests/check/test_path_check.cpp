@@ -4,6 +4,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <utility>
 
 #include "Support.h"
 #include "check/PathChecker.h"
@@ -31,6 +32,22 @@ PathCheckResult check(const Scene& s, const Path& p, size_t budget = 20'000'000)
 }
 
 const double kHalfPi = M_PI / 2;
+
+// A straight motion of every robot: from anywhere in the bounds to up to `share` of their size
+// away, turning up to `share` of two full turns either way.
+std::pair<Config, Config> randomMotion(const Scene& s, std::mt19937_64& rng, double share) {
+  const Box& b = s.bounds;
+  std::uniform_real_distribution<double> x(b.xmin, b.xmax), y(b.ymin, b.ymax), turn(-M_PI, M_PI),
+      step(-share, share);
+  Config a(s.dof()), e(s.dof());
+  for (size_t i = 0; i < s.robots.size(); ++i) {
+    a[3 * i] = x(rng), a[3 * i + 1] = y(rng), a[3 * i + 2] = turn(rng);
+    e[3 * i] = a[3 * i] + step(rng) * b.width();
+    e[3 * i + 1] = a[3 * i + 1] + step(rng) * b.height();
+    e[3 * i + 2] = a[3 * i + 2] + 2 * step(rng) * M_PI;
+  }
+  return {a, e};
+}
 
 }  // namespace
 
@@ -165,18 +182,9 @@ TEST(MotionFree, AgreesWithTheCertifierOnRandomMotions) {
   for (const Scene& s : {randomPolygonsTwoRobots(4), openClutterScene(3)}) {
     const CollisionChecker c(s);
     std::mt19937_64 rng(7);
-    const Box& b = s.bounds;
-    std::uniform_real_distribution<double> x(b.xmin, b.xmax), y(b.ymin, b.ymax), turn(-M_PI, M_PI),
-        step(-0.15, 0.15);
     int free = 0, refused = 0;
     for (int n = 0; n < 400; ++n) {
-      Config a(s.dof()), e(s.dof());
-      for (size_t i = 0; i < s.robots.size(); ++i) {
-        a[3 * i] = x(rng), a[3 * i + 1] = y(rng), a[3 * i + 2] = turn(rng);
-        e[3 * i] = a[3 * i] + step(rng) * b.width();
-        e[3 * i + 1] = a[3 * i + 1] + step(rng) * b.height();
-        e[3 * i + 2] = a[3 * i + 2] + 2 * step(rng) * M_PI;
-      }
+      const auto [a, e] = randomMotion(s, rng, 0.15);
       if (!c.isFree(a)) continue;
       const bool certified = checkMotion(s, c, {a, e}).ok;
       ASSERT_EQ(motionFree(c, a, e), certified) << s.name << " motion " << n;
@@ -194,20 +202,11 @@ TEST(MotionFree, CertifiedMotionsAreFreeAtEveryPoseAlongThem) {
   for (const Scene& s : {randomPolygonsTwoRobots(4), openClutterScene(3), openClutterScene(5)}) {
     const CollisionChecker c(s);
     std::mt19937_64 rng(11);
-    const Box& b = s.bounds;
-    std::uniform_real_distribution<double> x(b.xmin, b.xmax), y(b.ymin, b.ymax), turn(-M_PI, M_PI),
-        step(-0.1, 0.1);
     PathCheckSettings unmeasured;
     unmeasured.measureClearance = false;
     int certified = 0, prefixes = 0;
     for (int n = 0; n < 300; ++n) {
-      Config a(s.dof()), e(s.dof());
-      for (size_t i = 0; i < s.robots.size(); ++i) {
-        a[3 * i] = x(rng), a[3 * i + 1] = y(rng), a[3 * i + 2] = turn(rng);
-        e[3 * i] = a[3 * i] + step(rng) * b.width();
-        e[3 * i + 1] = a[3 * i + 1] + step(rng) * b.height();
-        e[3 * i + 2] = a[3 * i + 2] + 2 * step(rng) * M_PI;
-      }
+      const auto [a, e] = randomMotion(s, rng, 0.1);
       if (!c.isFree(a)) continue;
       const PathCheckResult r = checkMotion(s, c, {a, e});
       ASSERT_EQ(checkMotion(s, c, {a, e}, unmeasured).ok, r.ok) << s.name << " motion " << n;
