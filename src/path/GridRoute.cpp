@@ -34,7 +34,11 @@ class GridSearch {
         grid_(boost::array<size_t, 2>{
             {extent(bounds.xmax - bounds.xmin), extent(bounds.ymax - bounds.ymin)}}),
         state_(num_vertices(grid_), Unknown),
-        barred_(num_vertices(grid_), 0) {}
+        barred_(num_vertices(grid_), 0),
+        previous_(num_vertices(grid_)),
+        distance_(num_vertices(grid_), kNoStep),
+        rank_(num_vertices(grid_), kNoStep),
+        colour_(num_vertices(grid_), boost::white_color) {}
 
   Vec2 centre(const Cell& c) const {
     return {bounds_.xmin + (double(c[0]) + 0.5) * settings_.cell,
@@ -88,6 +92,13 @@ class GridSearch {
   std::vector<uint8_t> state_;
   std::vector<uint8_t> barred_;  // per cell, the directions of its barred steps
   size_t checks_ = 0;
+  // The search's maps, made once for all walks; a walk resets only the cells it discovered
+  // (a search towards a goal in open space meets a band of cells, where Boost's own setup
+  // would fill every map over the whole grid, walk after walk).
+  std::vector<Cell> previous_;
+  std::vector<double> distance_, rank_;
+  std::vector<boost::default_color_type> colour_;
+  std::vector<size_t> discovered_;
 };
 
 // Steps in a 4-connected grid, weighted: the walk is pulled tight and shortened afterwards, so
@@ -109,6 +120,10 @@ struct Manhattan : boost::astar_heuristic<Grid, double> {
 struct EndAtGoal : boost::default_astar_visitor {
   Cell goal;
   const std::vector<double>* distance;
+  std::vector<size_t>* discovered;  // every cell whose maps the search wrote
+  void discover_vertex(const Cell& c, const Grid& grid) const {
+    discovered->push_back(get(boost::vertex_index, grid, c));
+  }
   void examine_vertex(const Cell& c, const Grid& grid) const {
     if (std::isinf((*distance)[get(boost::vertex_index, grid, c)])) throw GaveUp{};
     if (c == goal) throw Reached{};
@@ -116,32 +131,41 @@ struct EndAtGoal : boost::default_astar_visitor {
 };
 
 std::optional<std::vector<Cell>> GridSearch::walk(const Cell& from, const Cell& to) {
-  const size_t n = num_vertices(grid_);
-  std::vector<Cell> previous(n);
-  std::vector<double> distance(n), rank(n);
-  std::vector<boost::default_color_type> colour(n);
   const auto index = get(boost::vertex_index, grid_);
   // A step into a blocked cell costs infinity, which relaxes nothing: the graph stays the
   // plain grid and a cell is tested only when a step into it is weighed.
   const auto weight = boost::make_function_property_map<Step, double>(
       [this](const Step& e) { return stepCost(source(e, grid_), target(e, grid_)); });
+  const Manhattan toGoal{{}, to};
+  distance_[index[from]] = 0;
+  rank_[index[from]] = toGoal(from);
+  discovered_.clear();
+  bool reached = false;
   try {
-    boost::astar_search(grid_, from, Manhattan{{}, to},
-                        boost::visitor(EndAtGoal{{}, to, &distance})
-                            .predecessor_map(make_iterator_property_map(previous.begin(), index))
-                            .rank_map(make_iterator_property_map(rank.begin(), index))
-                            .distance_map(make_iterator_property_map(distance.begin(), index))
-                            .color_map(make_iterator_property_map(colour.begin(), index))
-                            .weight_map(weight)
-                            .distance_inf(kNoStep));
-    return std::nullopt;  // the search ran out of cells: no way on the grid
+    boost::astar_search_no_init(
+        grid_, from, toGoal,
+        boost::visitor(EndAtGoal{{}, to, &distance_, &discovered_})
+            .predecessor_map(make_iterator_property_map(previous_.begin(), index))
+            .rank_map(make_iterator_property_map(rank_.begin(), index))
+            .distance_map(make_iterator_property_map(distance_.begin(), index))
+            .color_map(make_iterator_property_map(colour_.begin(), index))
+            .weight_map(weight)
+            .distance_inf(kNoStep));
+    // (Ending here, the search ran out of cells: no way on the grid.)
   } catch (const Reached&) {
+    reached = true;
   } catch (const GaveUp&) {
-    return std::nullopt;
   }
-  std::vector<Cell> cells{to};
-  while (cells.back() != from) cells.push_back(previous[get(index, cells.back())]);
-  std::reverse(cells.begin(), cells.end());
+  std::optional<std::vector<Cell>> cells;
+  if (reached) {
+    cells.emplace(1, to);
+    while (cells->back() != from) cells->push_back(previous_[index[cells->back()]]);
+    std::reverse(cells->begin(), cells->end());
+  }
+  for (size_t i : discovered_) {
+    distance_[i] = rank_[i] = kNoStep;
+    colour_[i] = boost::white_color;
+  }
   return cells;
 }
 
