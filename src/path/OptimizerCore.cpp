@@ -83,7 +83,14 @@ bool OptimizerCore::probedFree(const std::vector<Config>& stretch, size_t moved)
         probeCost_.push_back(segmentCost(checker_, stretch[k - 1], stretch[k]));
     }
     bool finer = false;
-    for (size_t k = 1; k < stretch.size(); ++k) {
+    // Segments from the middle out: a robot straightened over the stretch strays furthest from
+    // its certified way mid-stretch, where most refused candidates first collide (the same
+    // candidates are refused in any order).
+    const size_t n = stretch.size() - 1, middle = (n + 1) / 2;
+    for (size_t i = 0, visited = 0; visited < n; ++i) {
+      const size_t k = i % 2 ? middle - (i + 1) / 2 : middle + i / 2;  // (wraps past 0: skipped)
+      if (k < 1 || k > n) continue;
+      ++visited;
       if (level > 1 && 2 * probeCost_[k - 1] < double(parts) * probeSpacing_) continue;
       finer = true;
       for (size_t j = 1; j < parts; j += 2) {
