@@ -40,8 +40,12 @@ class Reach {
 /// What is left of a piece to certify once an evaluation at its middle certified `reach` on
 /// either side: pushed onto `pieces` right first, so that a stack visits them left to right.
 /// Each is at most half the piece, so pieces shrink as fast as halving them would.
-void pushRest(std::vector<Piece>& pieces, const Piece& p, double mid, double reach) {
+/// `keepCertified`: the certified stretch too, between them, as a piece marked certified.
+void pushRest(std::vector<Piece>& pieces, const Piece& p, double mid, double reach,
+              bool keepCertified = false) {
   if (mid + reach < p.s1) pieces.push_back({mid + reach, p.s1});
+  if (keepCertified)
+    pieces.push_back({std::max(p.s0, mid - reach), std::min(p.s1, mid + reach), true});
   if (mid - reach > p.s0) pieces.push_back({p.s0, mid - reach});
 }
 
@@ -545,10 +549,7 @@ double certifiedPrefix(const CollisionChecker& checker, const Config& a, const C
     } else {
       // What the evaluation certified about its pose is visited in its turn, as a piece of its
       // own: its middle may be the answer.
-      const double r = test.reach();
-      if (mid + r < p.s1) stack.push_back({mid + r, p.s1});
-      stack.push_back({std::max(p.s0, mid - r), std::min(p.s1, mid + r), true});
-      if (mid - r > p.s0) stack.push_back({p.s0, mid - r});
+      pushRest(stack, p, mid, test.reach(), /*keepCertified=*/true);
     }
   }
   return clear;
