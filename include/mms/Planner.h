@@ -61,10 +61,13 @@ struct PlannerParams {
 struct PlanStatistics {
   double seconds = 0;  // planning time, as the planner measures it
   size_t rounds = 0;
-  size_t graphNodes = 0, graphEdges = 0;               // roadmap or tree (OMPL: its states)
-  size_t manifoldsBuilt = 0, manifoldsUsed = 0;        // MMS: slices and lines, built / on the path
-  size_t pathCells = 0;                                // free-space cells on the graph path
-  size_t rejectedPaths = 0;                            // candidate motions the certifier refused
+  size_t graphNodes = 0, graphEdges = 0;         // roadmap or tree (OMPL: its states)
+  size_t manifoldsBuilt = 0, manifoldsUsed = 0;  // MMS: slices and lines, built / on the path
+  size_t pathCells = 0;                          // free-space cells on the graph path
+  size_t rejectedPaths = 0;                      // candidate motions the certifier refused
+  /// Robot tests and distances made while solving, where the planner counts them (OMPL's
+  /// planners; 0 otherwise): the work the optimiser's shortcut rounds are measured against.
+  size_t checks = 0;
   std::vector<std::pair<std::string, size_t>> counts;  // what was built, by name, in order
   /// Seconds by phase, in order. They sum to `seconds`, but for the phases that improve a
   /// path already found (afterFirstPath: "optimize", OMPL's "simplify"), which come after it.

@@ -593,6 +593,7 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
   OmplResult r;
   r.setupSeconds = total.seconds();
   Stopwatch watch;
+  const size_t checksBefore = CollisionChecker::workOnThisThread();
   const ProgressReporter reporter(progress, problem.made, total);
   const ob::PlannerStatus status = setup.solve(ob::PlannerTerminationCondition([&] {
     ++r.iterations;
@@ -600,6 +601,7 @@ OmplResult planWithOmpl(const Scene& scene, const OmplSettings& settings, const 
     return stop();
   }));
   r.solveSeconds = watch.seconds();
+  r.checks = CollisionChecker::workOnThisThread() - checksBefore;
   const GraphSize size = problem.made.size();
   r.states = size.vertices;
   r.edges = size.edges;

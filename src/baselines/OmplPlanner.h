@@ -50,6 +50,8 @@ struct OmplResult {
   /// Checks of the termination condition: one per iteration of the planner's loop, so the
   /// same for the same seed whatever the load (the portfolio's budget for its sampler).
   size_t iterations = 0;
+  /// Robot tests and distances made while solving (CollisionChecker::workOnThisThread).
+  size_t checks = 0;
   RecordTree tree;           // with OmplSettings::record: the tree or roadmap, thinned
   RecordGrowth growth;       // and how many states it had by when
   double recordSeconds = 0;  // of `seconds`, reading it out

@@ -214,7 +214,14 @@ double segmentRingDistance(Vec2 a, Vec2 b, const Ring& ring, double bound) {
 }
 }  // namespace
 
+namespace {
+thread_local size_t tWork = 0;  // workOnThisThread()
+}  // namespace
+
+size_t CollisionChecker::workOnThisThread() { return tWork; }
+
 Contact CollisionChecker::robotContact(size_t robot, const Pose& pose) const {
+  ++tWork;
   const Placed& a = placeRobot(*this, shapesId_, robot, pose);
   // The bounds are convex, so the robot is inside them when its box is.
   if (!bounds_.contains(a.box)) return {Contact::Kind::Bounds, 0};
@@ -241,6 +248,7 @@ bool CollisionChecker::referenceBlocked(size_t robot, const Pose& pose) const {
 }
 
 bool CollisionChecker::robotsDisjoint(size_t a, const Pose& pa, size_t b, const Pose& pb) const {
+  ++tWork;
   return !overlap(placeRobot(*this, shapesId_, a, pa), placeRobot(*this, shapesId_, b, pb));
 }
 
@@ -273,6 +281,7 @@ bool CollisionChecker::isFree(const Config& q) const { return !firstContact(q).h
 
 CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const Pose& pose,
                                                              double bound) const {
+  ++tWork;
   const Placed& a = placeRobot(*this, shapesId_, robot, pose);
   Clearance c{bound, {Contact::Kind::Bounds, 0}};
   if (a.ring)
@@ -292,11 +301,13 @@ CollisionChecker::Clearance CollisionChecker::robotClearance(size_t robot, const
 
 double CollisionChecker::robotsDistance(size_t a, const Pose& pa, size_t b, const Pose& pb,
                                         double bound) const {
+  ++tWork;
   return gap(placeRobot(*this, shapesId_, a, pa), placeRobot(*this, shapesId_, b, pb), bound);
 }
 
 CollisionChecker::Clearance CollisionChecker::sweptDiscClearance(size_t robot, Vec2 a, Vec2 b,
                                                                  double bound) const {
+  ++tWork;
   const double r = discs_[robot];
   Clearance c{bound, {Contact::Kind::Bounds, 0}};
   // The bounds are convex: the stadium is inside them when both end discs are.
@@ -315,6 +326,7 @@ CollisionChecker::Clearance CollisionChecker::sweptDiscClearance(size_t robot, V
 
 double CollisionChecker::sweptDiscDistance(size_t i, Vec2 ai, Vec2 bi, size_t j, Vec2 aj, Vec2 bj,
                                            const Pose& pj) const {
+  ++tWork;
   if (discs_[j] > 0)
     return std::max(0.0, pointSegmentDistance({0, 0}, ai - aj, bi - bj) - discs_[i] - discs_[j]);
   const Placed& held = placeRobot(*this, shapesId_, j, pj);

@@ -83,6 +83,11 @@ class CollisionChecker {
   double sweptDiscDistance(size_t i, Vec2 ai, Vec2 bi, size_t j, Vec2 aj, Vec2 bj,
                            const Pose& pj) const;
 
+  /// Robot tests and distances (one robot against the bounds and obstacles, or one pair of
+  /// robots) that any checker made on the calling thread: work counted where time would depend
+  /// on the machine's load, so that budgets measured in it keep a seed's results the same.
+  static size_t workOnThisThread();
+
   double tolerance() const { return tolerance_; }
   /// Up to this many robots every pair is tested; beyond, only pairs a sweep over the robots'
   /// discs finds near (geometry/BroadPhase.h). Either way the same pairs collide.

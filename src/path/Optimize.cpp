@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "path/ShortWay.h"
 
@@ -23,6 +24,7 @@ class Optimizer final : detail::ShortWay {
 
   void run(std::vector<Config>& w) {
     limit_ = settings_.maxWork;
+    roundsWork_ = settings_.roundsWork ? settings_.roundsWork : std::numeric_limits<size_t>::max();
     turnShortWay(w);
     shortcutRounds(w);
     // Turns made the short way only along a new route, tried once the shortcuts have taken
@@ -46,14 +48,19 @@ class Optimizer final : detail::ShortWay {
   // Rounds of shortcuts until they stop paying: the first rounds take most of what there is,
   // and on an easy scene the rest would cost more than the planning did. Short rounds end the
   // work soon after it stops paying; two weak rounds in a row, not one, because a short round
-  // on a tight path often takes nothing by chance while the next takes much.
+  // on a tight path often takes nothing by chance while the next takes much. They also end
+  // once they have made the tests they may (settings.roundsWork): counted, not timed.
   void shortcutRounds(std::vector<Config>& w) {
     // The cumulative cost, which the next attempt reads too, instead of pathCost again.
     double cost = cumulativeCost(w).back();
     size_t weak = 0;
-    for (size_t round = 0; round < settings_.rounds && !done(); ++round) {
+    const size_t start = CollisionChecker::workOnThisThread();
+    const auto spent = [&] {
+      return s_.roundsWork + (CollisionChecker::workOnThisThread() - start) >= roundsWork_;
+    };
+    for (size_t round = 0; round < settings_.rounds && !done() && !spent(); ++round) {
       const size_t before = s_.accepted;
-      for (size_t a = 0; a < settings_.attempts && !done() && w.size() >= 2; ++a)
+      for (size_t a = 0; a < settings_.attempts && !done() && !spent() && w.size() >= 2; ++a)
         shortcut(w, /*partial=*/rng_.below(3) != 0);
       dropStraightWaypoints(w);
       changed();
@@ -65,6 +72,7 @@ class Optimizer final : detail::ShortWay {
       if (weak == kWeakRounds) break;
       cost = now;
     }
+    s_.roundsWork += CollisionChecker::workOnThisThread() - start;
   }
 
   // A point of the path at arc parameter `s` (cumulative cost): waypoint `k`, or when none is
@@ -272,6 +280,7 @@ class Optimizer final : detail::ShortWay {
   }
 
   static constexpr size_t kWeakRounds = 2;  // rounds in a row that do not pay, to stop
+  size_t roundsWork_ = 0;                   // what the rounds may spend (settings.roundsWork)
   // An attempt's scratch, kept between attempts: thousands of attempts allocated a pose each.
   Stretch stretch_;
   std::vector<Config> candidate_;

@@ -47,12 +47,17 @@ struct OptimizeSettings {
   /// robots do not take k^2 times as long; and evaluations per candidate stretch: a stretch
   /// that needs more slides along contacts.
   size_t maxWork = 300'000, candidateEvaluations = 4000;
+  /// What the rounds of shortcuts may spend, in robot tests and distances
+  /// (CollisionChecker::workOnThisThread; their certification included); 0: no bound but the
+  /// rounds' own. The turns made the short way are not bounded by it.
+  size_t roundsWork = 0;
 };
 
 struct OptimizeStats {
   double costBefore = 0, costAfter = 0;
   size_t accepted = 0;     // changes taken
   size_t rounds = 0;       // rounds of shortcuts run
+  size_t roundsWork = 0;   // robot tests and distances they made
   size_t checked = 0;      // candidate stretches given to the certifier
   size_t evaluations = 0;  // the certifier's evaluations for them (of all robots)
   size_t slices = 0;       // exact slices built to route a robot that turns the other way

@@ -53,6 +53,8 @@ class ShortWay : protected OptimizerCore {
   bool rewindPass(std::vector<Config>& w, size_t robot, const std::vector<Run>& runs,
                   const std::vector<double>& cum, const std::vector<Rewind>& candidates, bool spin);
 
+  bool holdThroughTurn(std::vector<Config>& w, size_t robot, const std::vector<double>& cum);
+
   static void takeWindow(std::vector<Config>& w, size_t from, size_t to,
                          const std::vector<Config>& window, size_t c, double turns);
 

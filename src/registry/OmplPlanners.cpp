@@ -17,7 +17,8 @@ PlanStatistics statistics(const OmplResult& r) {
   s.seconds = r.seconds;
   s.graphNodes = r.states;
   s.graphEdges = r.edges;
-  s.counts = {{"states", r.states}, {"iterations", r.iterations}};
+  s.checks = r.checks;
+  s.counts = {{"states", r.states}, {"iterations", r.iterations}, {"checks", r.checks}};
   return s;
 }
 

@@ -207,7 +207,8 @@ TEST(Ompl, ProgressComesAboutOnceASecond) {
   EXPECT_NE(cli.err.find("mms plan: 1.0 s: "), std::string::npos) << cli.err;
   EXPECT_EQ(cli.err.find("round"), std::string::npos) << cli.err;
   EXPECT_NE(cli.out.find(" states, "), std::string::npos) << cli.out;
-  EXPECT_NE(cli.out.find(" iterations; graph "), std::string::npos) << cli.out;
+  EXPECT_NE(cli.out.find(" iterations, "), std::string::npos) << cli.out;
+  EXPECT_NE(cli.out.find(" checks; graph "), std::string::npos) << cli.out;
   EXPECT_EQ(cli.out.find("rounds"), std::string::npos) << cli.out;
   EXPECT_EQ(cli.out.find("to the path"), std::string::npos)
       << "no path, no time to it: " << cli.out;

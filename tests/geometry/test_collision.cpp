@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <thread>
 #include <vector>
 
 #include "Support.h"
@@ -438,4 +439,23 @@ TEST(RingDistance, IsTheNearestEdgePairOrZeroWhereTheyMeet) {
   EXPECT_GT(inside, 30);  // one inside the other, no edges crossing
   EXPECT_GT(apart, 300);
   EXPECT_GT(bounded, 30);
+}
+
+// Work is counted per thread: each robot test or distance once, another thread's not at all,
+// so that a budget read on one thread is the same whatever runs beside it.
+TEST(CollisionChecker, CountsItsWorkOnTheCallingThread) {
+  Random rng(3);
+  const Scene s = twoStarRobots(rng);
+  const CollisionChecker checker(s);
+  const Pose a{0, 0, 0}, b{50, 50, 0};
+  const size_t start = CollisionChecker::workOnThisThread();
+  checker.robotFree(0, a);
+  checker.robotClearance(0, a);
+  checker.robotsDisjoint(0, a, 1, b);
+  checker.robotsDistance(0, a, 1, b);
+  EXPECT_EQ(CollisionChecker::workOnThisThread() - start, 4u);
+  std::thread([&] {
+    for (int k = 0; k < 100; ++k) checker.robotFree(0, a);
+  }).join();
+  EXPECT_EQ(CollisionChecker::workOnThisThread() - start, 4u);
 }
