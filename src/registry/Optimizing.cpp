@@ -161,36 +161,12 @@ class Optimizing final : public Planner {
   std::vector<ParamSpec> specs_;  // every parameter of the planner, its own and these
 };
 
-}  // namespace
+/// What ends the shortcut rounds, declared once for the command line, benchmarks and docs.
+struct RoundsParams {
+  ParamSpec rounds, gain, effort;
+};
 
-PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
-  const ParamSpec optimize{
-      "optimize",
-      Type::Integer,
-      0,
-      1,
-      onByDefault ? 1.0 : 0.0,
-      "1: shorten the first certified path (shortcuts, one robot's translation or rotation "
-      "straightened, turns the short way), every change certified, within the time limit; 0: "
-      "the planner's path as found (default " +
-          std::string(onByDefault ? "1" : "0") + ")"};
-  ParamSpec objective{"objective",
-                      Type::Integer,
-                      0,
-                      1,
-                      0,
-                      "What --optimize improves: length (the distance the robots' points "
-                      "travel), or clearance (then also away from contacts) (default length)"};
-  objective.choices = {"length", "clearance"};
-  const ParamSpec restarts{
-      "restarts",
-      Type::Integer,
-      0,
-      1000,
-      0,
-      "With --optimize: plan N more times from seeds drawn from --seed, optimise each path and "
-      "keep the best by --objective (anytime improvement within the time limit; the optimiser "
-      "alone keeps the first path's way round the obstacles) (default 0)"};
+RoundsParams roundsParams() {
   const OptimizeSettings defaults;
   const ParamSpec rounds{"optimize-rounds",
                          Type::Integer,
@@ -221,22 +197,55 @@ PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
           "find; 0: no such bound. MMS's paths, whose exact constructions these do not count, "
           "are not bounded by it (default " +
           formatNumber(kEffort) + ")"};
+  return {rounds, gain, effort};
+}
+
+}  // namespace
+
+PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
+  const ParamSpec optimize{
+      "optimize",
+      Type::Integer,
+      0,
+      1,
+      onByDefault ? 1.0 : 0.0,
+      "1: shorten the first certified path (shortcuts, one robot's translation or rotation "
+      "straightened, turns the short way), every change certified, within the time limit; 0: "
+      "the planner's path as found (default " +
+          std::string(onByDefault ? "1" : "0") + ")"};
+  ParamSpec objective{"objective",
+                      Type::Integer,
+                      0,
+                      1,
+                      0,
+                      "What --optimize improves: length (the distance the robots' points "
+                      "travel), or clearance (then also away from contacts) (default length)"};
+  objective.choices = {"length", "clearance"};
+  const ParamSpec restarts{
+      "restarts",
+      Type::Integer,
+      0,
+      1000,
+      0,
+      "With --optimize: plan N more times from seeds drawn from --seed, optimise each path and "
+      "keep the best by --objective (anytime improvement within the time limit; the optimiser "
+      "alone keeps the first path's way round the obstacles) (default 0)"};
+  const RoundsParams bounds = roundsParams();
   info.params.push_back(optimize);
   info.params.push_back(objective);
   info.params.push_back(restarts);
-  info.params.push_back(rounds);
-  info.params.push_back(gain);
-  info.params.push_back(effort);
-  info.make = [make = info.make, optimize, objective, restarts, rounds, gain, effort,
-               specs = info.params](const Scene& scene, const PlannerParams& params,
-                                    const std::string& source) {
+  info.params.push_back(bounds.rounds);
+  info.params.push_back(bounds.gain);
+  info.params.push_back(bounds.effort);
+  info.make = [make = info.make, optimize, objective, restarts, bounds, specs = info.params](
+                  const Scene& scene, const PlannerParams& params, const std::string& source) {
     OptimizeSettings s;
     s.objective =
         paramValue(params, objective) == 1 ? PathObjective::Clearance : PathObjective::Length;
     // The certifier's budget grows with the rounds asked for, as each round may spend its share.
-    s.maxWork = s.maxWork * size_t(paramValue(params, rounds)) / s.rounds;
-    s.rounds = size_t(paramValue(params, rounds));
-    s.minGain = paramValue(params, gain);
+    s.maxWork = s.maxWork * size_t(paramValue(params, bounds.rounds)) / s.rounds;
+    s.rounds = size_t(paramValue(params, bounds.rounds));
+    s.minGain = paramValue(params, bounds.gain);
     Factory factory = [make, params, source](const Scene& sc, uint64_t seed) {
       PlannerParams p = params;
       p.seed = seed;
@@ -247,9 +256,9 @@ PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
         std::map<std::string, double>{{"optimize", paramValue(params, optimize)},
                                       {"objective", paramValue(params, objective)},
                                       {"restarts", paramValue(params, restarts)},
-                                      {rounds.key(), paramValue(params, rounds)},
-                                      {gain.key(), paramValue(params, gain)},
-                                      {effort.key(), paramValue(params, effort)}},
+                                      {bounds.rounds.key(), paramValue(params, bounds.rounds)},
+                                      {bounds.gain.key(), paramValue(params, bounds.gain)},
+                                      {bounds.effort.key(), paramValue(params, bounds.effort)}},
         specs);
   };
   return info;
