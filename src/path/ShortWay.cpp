@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "geometry/SpinPlace.h"
 #include "manifolds/Pivot.h"
@@ -119,18 +120,28 @@ bool ShortWay::holdThroughTurn(std::vector<Config>& w, size_t robot,
   struct Window {
     size_t from, to;
     double turns, saving, cost;
+    size_t order;  // as found: the last tie-break
   };
+  auto better = [](const Window& a, const Window& b) {
+    return std::tie(b.saving, a.cost, a.order) < std::tie(a.saving, b.cost, b.order);
+  };
+  // Only the tries' worth of best windows is kept as they are found, and a window spans at
+  // most kHoldSpan waypoints: a long path has a great many.
   std::vector<Window> windows;
   for (size_t i = 0; i + 1 < w.size(); ++i)
-    for (size_t j = i + 1; j < w.size(); ++j) {
+    for (size_t j = i + 1; j < std::min(w.size(), i + kHoldSpan + 1); ++j) {
       const double net = w[j][c] - w[i][c], turns = -std::round(net / (2 * M_PI));
       const double saving = std::fabs(net) - std::fabs(net + 2 * M_PI * turns);
-      if (turns * extra < 0 && std::fabs(turns) <= std::fabs(extra) && saving > kMinSaving)
-        windows.push_back({i, j, turns, std::min(saving, 2 * M_PI), cum[j] - cum[i]});
+      if (turns * extra >= 0 || std::fabs(turns) > std::fabs(extra) || saving <= kMinSaving)
+        continue;
+      windows.push_back(
+          {i, j, turns, std::min(saving, 2 * M_PI), cum[j] - cum[i], i * w.size() + j});
+      if (windows.size() == 2 * kRewindTries) {
+        std::nth_element(windows.begin(), windows.begin() + kRewindTries, windows.end(), better);
+        windows.resize(kRewindTries);
+      }
     }
-  std::stable_sort(windows.begin(), windows.end(), [](const Window& a, const Window& b) {
-    return a.saving > b.saving + 1e-9 || (a.saving > b.saving - 1e-9 && a.cost < b.cost);
-  });
+  std::sort(windows.begin(), windows.end(), better);
   size_t tries = 0;
   for (const Window& h : windows) {
     if (tries++ == kRewindTries || done()) return false;

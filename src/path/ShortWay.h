@@ -100,6 +100,7 @@ class ShortWay : protected OptimizerCore {
                         size_t at, size_t c);
 
   static constexpr size_t kRewindTries = 32;   // certifications per robot and change
+  static constexpr size_t kHoldSpan = 512;     // waypoints a full turn held through spans at most
   static constexpr size_t kSpinTries = 24;     // the same, for turns moved to spin in place
   static constexpr size_t kSpinCarriers = 64;  // and carriers built for them (each a stretch)
   static constexpr size_t kSpinPlaces = 4;     // and places where the robot could spin, climbed to
