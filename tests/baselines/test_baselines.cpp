@@ -3,6 +3,8 @@
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 
+#include <string>
+
 #include "Support.h"
 #include "baselines/OmplPlanner.h"
 #include "baselines/UobprmSampler.h"
@@ -103,16 +105,20 @@ TEST(Ompl, CoarseResolutionPathsAreCheckedNotTrusted) {
 
 TEST(Ompl, TwoRobotsAndTranslatingPartsUseTheirOwnSpaces) {
   // PRM grows its roadmap in a thread, so its paths depend on timing: a resolution-checked
-  // path may still fail certification now and then. Some seed must give a certified one.
+  // path may still fail certification now and then (in Release 1 seed of 12 on the niche;
+  // under the sanitizers and a loaded machine once 5 in a row). Some seed must give a
+  // certified one.
   for (const char* f : {"two-robots/niche-swap.json", "translating/cup.json"}) {
     const Scene s = loadScene(scenario(f));
     int found = 0;
-    for (uint64_t seed = 1; seed <= 5 && !found; ++seed) {
+    std::string outcomes;  // each seed's, for a failure's message
+    for (uint64_t seed = 1; seed <= 10 && !found; ++seed) {
       OmplSettings st;
       st.planner = "prm-bridge";
       st.seed = seed;
       st.resolution = 0.0005;
       const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(20.0)));
+      outcomes += std::string(" ") + toString(r.status);
       if (r.status != PlanStatus::Found) continue;
       ++found;
       for (const Config& q : r.waypoints)
@@ -121,7 +127,7 @@ TEST(Ompl, TwoRobotsAndTranslatingPartsUseTheirOwnSpaces) {
             EXPECT_EQ(q[3 * i + 2], s.robots[i].start.theta);
           }
     }
-    EXPECT_EQ(found, 1) << f;
+    EXPECT_EQ(found, 1) << f << ":" << outcomes;
   }
 }
 
