@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "path/ShortWay.h"
 
@@ -24,7 +23,6 @@ class Optimizer final : detail::ShortWay {
 
   void run(std::vector<Config>& w) {
     limit_ = settings_.maxWork;
-    roundsWork_ = settings_.roundsWork ? settings_.roundsWork : std::numeric_limits<size_t>::max();
     turnShortWay(w);
     shortcutRounds(w);
     // Turns made the short way only along a new route, tried once the shortcuts have taken
@@ -56,7 +54,8 @@ class Optimizer final : detail::ShortWay {
     size_t weak = 0;
     const size_t start = CollisionChecker::workOnThisThread();
     const auto spent = [&] {
-      return s_.roundsWork + (CollisionChecker::workOnThisThread() - start) >= roundsWork_;
+      return settings_.roundsWork > 0 &&
+             s_.roundsWork + (CollisionChecker::workOnThisThread() - start) >= settings_.roundsWork;
     };
     for (size_t round = 0; round < settings_.rounds && !done() && !spent(); ++round) {
       const size_t before = s_.accepted;
@@ -280,7 +279,6 @@ class Optimizer final : detail::ShortWay {
   }
 
   static constexpr size_t kWeakRounds = 2;  // rounds in a row that do not pay, to stop
-  size_t roundsWork_ = 0;                   // what the rounds may spend (settings.roundsWork)
   // An attempt's scratch, kept between attempts: thousands of attempts allocated a pose each.
   Stretch stretch_;
   std::vector<Config> candidate_;
