@@ -30,6 +30,11 @@ struct OmplSettings {
   /// Each robot's uniform samples redrawn until it is clear of the obstacles (up to 100 draws):
   /// the tree planners grow towards free space.
   bool freeSamples = false;
+  /// The share of samples in which each turning robot's angle is drawn between its start and
+  /// goal angles (the short way) instead of from the whole circle: a tree whose states turn
+  /// at random makes a path that turns back and forth wherever it goes, and taking that out
+  /// is most of what the optimiser does after a sampler in open space.
+  double leanAngles = 0;
   /// Leave OMPL's planner and states allocated (a command-line run about to exit): freeing
   /// a million states would overrun the time limit by seconds.
   bool keepUntilExit = false;

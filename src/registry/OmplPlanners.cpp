@@ -70,7 +70,7 @@ struct Entry {
 
 // The parameters OMPL's planners declare, each once (a planner takes those its entry names).
 struct OmplSpecs {
-  ParamSpec resolution, range, k, segment, simplify, certified, free;
+  ParamSpec resolution, range, k, segment, simplify, certified, free, lean;
 };
 
 OmplSpecs omplSpecs() {
@@ -121,13 +121,21 @@ OmplSpecs omplSpecs() {
       double(d.freeSamples),
       "OMPL planners: redraw each robot's uniform samples until it is clear of the "
       "obstacles (up to 100 draws), so that trees grow towards free space"};
-  return {resolution, range, k, segment, simplify, certified, free};
+  const ParamSpec lean{"lean-angles",
+                       Type::Real,
+                       0,
+                       1,
+                       d.leanAngles,
+                       "OMPL planners: the share of samples whose angles are drawn between "
+                       "each robot's start and goal angles (the short way) instead of from the "
+                       "whole circle, so that paths turn less back and forth"};
+  return {resolution, range, k, segment, simplify, certified, free, lean};
 }
 
 }  // namespace
 
 std::vector<PlannerInfo> omplPlannerInfos() {
-  const auto [resolution, range, k, segment, simplify, certified, free] = omplSpecs();
+  const auto [resolution, range, k, segment, simplify, certified, free, lean] = omplSpecs();
   const Entry entries[] = {
       {"prm", "OMPL PRM (uniform samples)", false, true, false},
       {"obprm", "OMPL PRM with OMPL's obstacle-based sampler", false, true, false},
@@ -158,6 +166,7 @@ std::vector<PlannerInfo> omplPlannerInfos() {
     info.params.push_back(simplify);
     info.params.push_back(certified);
     info.params.push_back(free);
+    info.params.push_back(lean);
     const std::string name = e.name;
     const std::vector<ParamSpec> specs = info.params;
     info.make = [name, specs](const Scene& scene, const PlannerParams& params,
@@ -178,6 +187,7 @@ std::vector<PlannerInfo> omplPlannerInfos() {
         if (spec.name == "simplify") s.simplify = v != 0;
         if (spec.name == "certified-motions") s.certifiedMotions = v != 0;
         if (spec.name == "free-samples") s.freeSamples = v != 0;
+        if (spec.name == "lean-angles") s.leanAngles = v;
       }
       return std::make_unique<OmplAdapter>(scene, s, std::move(used));
     };

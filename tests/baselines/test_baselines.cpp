@@ -3,6 +3,7 @@
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 
+#include <cmath>
 #include <string>
 
 #include "Support.h"
@@ -218,4 +219,44 @@ TEST(Ompl, ProgressComesAboutOnceASecond) {
   EXPECT_EQ(cli.out.find("rounds"), std::string::npos) << cli.out;
   EXPECT_EQ(cli.out.find("to the path"), std::string::npos)
       << "no path, no time to it: " << cli.out;
+}
+
+// With every angle leaning (--lean-angles 1), each state RRT-Connect adds lies on the short way
+// between two states whose angles lie between the robots' start and goal angles: its path never
+// turns outside that arc. Drawn from the whole circle, the paths of open clutter do, and turn
+// more.
+TEST(Ompl, LeaningAnglesKeepTheTreeBetweenStartAndGoalAngles) {
+  auto outsideArc = [](const Scene& s, const std::vector<Config>& w) {
+    size_t outside = 0;
+    for (size_t i = 0; i < s.robots.size(); ++i) {
+      const double turn =
+          std::remainder(s.robots[i].goal.theta - s.robots[i].start.theta, 2 * M_PI);
+      for (const Config& q : w) {
+        const double d = q[3 * i + 2] - w.front()[3 * i + 2];
+        outside += d < std::min(0.0, turn) - 1e-9 || d > std::max(0.0, turn) + 1e-9;
+      }
+    }
+    return outside;
+  };
+  size_t outside[2] = {0, 0};
+  double rotation[2] = {0, 0};
+  for (uint64_t seed = 1; seed <= 5; ++seed) {
+    const Scene s = openClutterScene(seed);
+    for (int lean = 0; lean <= 1; ++lean) {
+      OmplSettings st;
+      st.planner = "rrtconnect";
+      st.seed = seed;
+      st.certifiedMotions = st.freeSamples = true;
+      st.leanAngles = lean;
+      const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(20)));
+      ASSERT_EQ(r.status, PlanStatus::Found) << "open clutter " << seed << ", lean " << lean;
+      outside[lean] += outsideArc(s, r.waypoints);
+      for (size_t k = 1; k < r.waypoints.size(); ++k)
+        for (size_t i = 0; i < s.robots.size(); ++i)
+          rotation[lean] += std::fabs(r.waypoints[k][3 * i + 2] - r.waypoints[k - 1][3 * i + 2]);
+    }
+    EXPECT_EQ(outside[1], 0u) << "open clutter " << seed;
+  }
+  EXPECT_GT(outside[0], 0u);
+  EXPECT_LT(rotation[1], 0.5 * rotation[0]);
 }
