@@ -263,11 +263,15 @@ class FreeSampler : public ob::StateSampler {
   }
   double angle(const Robot& robot) {
     if (lean_ > 0 && draws_.uniform() < lean_) {
-      const double turn = std::remainder(robot.goal.theta - robot.start.theta, 2 * M_PI);
+      double turn = std::remainder(robot.goal.theta - robot.start.theta, 2 * M_PI);
+      // A half turn is as short either way round: each draw takes one (a U that turns half
+      // round about a part may fit only one way).
+      if (std::fabs(turn) > M_PI - kHalfTurnSlack && draws_.below(2) == 0) turn = -turn;
       return std::remainder(robot.start.theta + draws_.uniform() * turn, 2 * M_PI);
     }
     return draws_.uniform(-M_PI, M_PI);
   }
+  static constexpr double kHalfTurnSlack = 1e-6;
   // The sampler's own stream, seeded from OMPL's (so from --seed).
   static uint64_t seedFrom(ompl::RNG& rng) {
     const auto half = [&] { return uint64_t(rng.uniformInt(0, 0x7fffffff)); };

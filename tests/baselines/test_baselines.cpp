@@ -260,3 +260,27 @@ TEST(Ompl, LeaningAnglesKeepTheTreeBetweenStartAndGoalAngles) {
   EXPECT_GT(outside[0], 0u);
   EXPECT_LT(rotation[1], 0.5 * rotation[0]);
 }
+
+// A half turn is as short either way round, and the way a robot can take is a matter of the
+// scene, not of how its angles were written: leaning draws go both ways (a U turning half round
+// about a part it swallowed).
+TEST(Ompl, LeaningAnglesGoBothWaysForAHalfTurn) {
+  for (uint64_t seed = 1; seed <= 3; ++seed) {
+    const Scene s = swallowScene(seed);
+    const Robot& u = s.robots[0];
+    ASSERT_NEAR(std::fabs(std::remainder(u.goal.theta - u.start.theta, 2 * M_PI)), M_PI, 1e-9);
+    OmplSettings st;
+    st.planner = "rrtconnect";
+    st.seed = seed;
+    st.certifiedMotions = st.freeSamples = st.record = true;
+    st.leanAngles = 1;
+    const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(20)));
+    size_t ways[2] = {0, 0};  // states turned from the start one way, and the other
+    for (const Config& q : r.tree.states) {
+      const double d = std::remainder(q[2] - u.start.theta, 2 * M_PI);
+      if (std::fabs(d) > 0.1 && std::fabs(d) < M_PI - 0.1) ++ways[d > 0];
+    }
+    EXPECT_GT(ways[0], 0u) << "swallow " << seed;
+    EXPECT_GT(ways[1], 0u) << "swallow " << seed;
+  }
+}
