@@ -412,7 +412,10 @@ MadePlanner makePlanner(const ob::SpaceInformationPtr& si, const OmplSettings& s
     return prm();
   };
   auto withRange = [&](auto p) {
-    if (s.range > 0) p->setRange(s.range);
+    if (s.range > 0)
+      p->setRange(s.range);
+    else if (s.rangeShare > 0)
+      p->setRange(s.rangeShare * extent);
     return sized(p);
   };
   if (n == "prm") return prm();

@@ -70,7 +70,7 @@ struct Entry {
 
 // The parameters OMPL's planners declare, each once (a planner takes those its entry names).
 struct OmplSpecs {
-  ParamSpec resolution, range, k, segment, simplify, certified, free, lean;
+  ParamSpec resolution, range, share, k, segment, simplify, certified, free, lean;
 };
 
 OmplSpecs omplSpecs() {
@@ -90,6 +90,13 @@ OmplSpecs omplSpecs() {
                         d.range,
                         "OMPL tree planners and LazyPRM: maximum motion length (0: OMPL's "
                         "default)"};
+  const ParamSpec share{"range-share",
+                        Type::Real,
+                        0,
+                        1,
+                        d.rangeShare,
+                        "OMPL tree planners and LazyPRM, where --range is 0: maximum motion "
+                        "length as a share of the state space's extent (0: OMPL's 0.2)"};
   const ParamSpec k{"k",
                     Type::Integer,
                     0,
@@ -129,13 +136,13 @@ OmplSpecs omplSpecs() {
                        "OMPL planners: the share of samples whose angles are drawn between "
                        "each robot's start and goal angles (the short way) instead of from the "
                        "whole circle, so that paths turn less back and forth"};
-  return {resolution, range, k, segment, simplify, certified, free, lean};
+  return {resolution, range, share, k, segment, simplify, certified, free, lean};
 }
 
 }  // namespace
 
 std::vector<PlannerInfo> omplPlannerInfos() {
-  const auto [resolution, range, k, segment, simplify, certified, free, lean] = omplSpecs();
+  const auto [resolution, range, share, k, segment, simplify, certified, free, lean] = omplSpecs();
   const Entry entries[] = {
       {"prm", "OMPL PRM (uniform samples)", false, true, false},
       {"obprm", "OMPL PRM with OMPL's obstacle-based sampler", false, true, false},
@@ -160,7 +167,10 @@ std::vector<PlannerInfo> omplPlannerInfos() {
     info.name = e.name;
     info.summary = e.summary;
     info.params = {resolution};
-    if (e.range) info.params.push_back(range);
+    if (e.range) {
+      info.params.push_back(range);
+      info.params.push_back(share);
+    }
     if (e.neighbours) info.params.push_back(k);
     if (e.segment) info.params.push_back(segment);
     info.params.push_back(simplify);
@@ -182,6 +192,7 @@ std::vector<PlannerInfo> omplPlannerInfos() {
         used[spec.key()] = v;
         if (spec.name == "resolution") s.resolution = v;
         if (spec.name == "range") s.range = v;
+        if (spec.name == "range-share") s.rangeShare = v;
         if (spec.name == "k") s.neighbours = unsigned(v);
         if (spec.name == "segment-factor") s.segmentFactor = v;
         if (spec.name == "simplify") s.simplify = v != 0;

@@ -45,10 +45,13 @@ TEST(Portfolio, TheWinnerIsNamedAndRunAloneGivesTheSamePath) {
     // The portfolio optimises the winner's path as the winner alone does when asked; the
     // sampler certifies its motions as it goes.
     const std::string alsoAsked =
-        winner == "rrtconnect" ? " --certified-motions --free-samples --lean-angles 0.5" : "";
+        winner == "rrtconnect"
+            ? " --certified-motions --free-samples --lean-angles 0.5 --range-share 0.1"
+            : "";
     EXPECT_EQ(path["parameters"].value("certified_motions", 0.0), alsoAsked.empty() ? 0 : 1);
     EXPECT_EQ(path["parameters"].value("free_samples", 0.0), alsoAsked.empty() ? 0 : 1);
     EXPECT_EQ(path["parameters"].value("lean_angles", 0.0), alsoAsked.empty() ? 0 : 0.5);
+    EXPECT_EQ(path["parameters"].value("range_share", 0.0), alsoAsked.empty() ? 0 : 0.1);
     ASSERT_EQ(runMms("plan " + file + " -q --seed 3 --time-limit 60 --optimize 1 --planner " +
                      winner + alsoAsked + " -o " + quote(alone))
                   .code,
