@@ -25,7 +25,7 @@ struct OmplSettings {
   /// `range` is 0 (0: OMPL's 0.2). Among robots moving at once a long motion fails more often on
   /// the others: with certified motions and free samples, 0.1 made RRT-Connect 1.4x faster on
   /// two robots in open clutter, 1.2x among five discs swapping and 3x among ten in a room
-  /// (median, tuning seeds); for one robot about the same (bends 0.9x).
+  /// (median, tuning seeds); for one robot about the same or slower (bends 0.9x).
   double rangeShare = 0;
   unsigned neighbours = 0;    // PRM family: k nearest neighbours; 0 = OMPL's default
   double segmentFactor = 10;  // U-OB-PRM: segment length l = factor x resolution x extent

@@ -33,10 +33,15 @@ namespace {
 constexpr const char* kSampler = "rrtconnect";
 /// How the sampler runs (`--planner rrtconnect` with these reproduces its paths): motions
 /// certified by clearance, samples redrawn until clear, so its trees grow into free space, half
-/// the angles drawn between start and goal, so its paths turn less back and forth, and motions
-/// half OMPL's default length, which among several robots fail less often on the others.
-const std::map<std::string, double> kSamplerParams{
-    {"certified-motions", 1}, {"free-samples", 1}, {"lean-angles", 0.5}, {"range-share", 0.1}};
+/// the angles drawn between start and goal, so its paths turn less back and forth, and among two
+/// robots or more motions half OMPL's default length, which then fail less often on the others
+/// (for one robot about the same: docs/planner.md, "The default: a portfolio").
+std::map<std::string, double> samplerSettings(const Scene& scene) {
+  std::map<std::string, double> p{
+      {"certified-motions", 1}, {"free-samples", 1}, {"lean-angles", 0.5}};
+  if (scene.robots.size() >= 2) p["range-share"] = 0.1;
+  return p;
+}
 /// How long the sampler runs alone before MMS starts: on open scenes it is then often done,
 /// and no second thread is paid for (docs/planner.md, "The default: a portfolio").
 constexpr std::chrono::milliseconds kHeadStart{2};
@@ -278,7 +283,8 @@ class Portfolio : public Planner {
   Portfolio(const Scene& scene, Challenger::Maker makeMms, const PlannerParams& params)
       : scene_(scene),
         makeMms_(std::move(makeMms)),
-        samplerParams_{params.seed, kSamplerParams, false, params.exitsAfterRun, params.record},
+        samplerParams_{params.seed, samplerSettings(scene), false, params.exitsAfterRun,
+                       params.record},
         iterations_(size_t(paramValue(params, samplerIterations()))),
         mmsAlone_(makeMms_ && params.roadmapPicture && scene.robots.size() == 1) {}
   ~Portfolio() override { finishBackgroundWork(); }

@@ -152,11 +152,12 @@ TEST(Plan, DefaultPlannerSamePathFileUnderLoad) {
     files.push_back(dir.path(family + "-" + seed + ".json"));
     ASSERT_EQ(runMms("scenario " + family + " --seed " + seed + " -o " + quote(files.back())).code,
               0);
-    const nlohmann::json sampler =
-        statisticsOf(plan(files.back(),
-                          "--planner rrtconnect --certified-motions --free-samples --lean-angles "
-                          "0.5 --range-share 0.1",
-                          "sampler.json"));
+    // The portfolio's sampler, which among several robots (the discs) takes shorter motions.
+    const std::string shorter = family == "discs-swap" ? " --range-share 0.1" : "";
+    const nlohmann::json sampler = statisticsOf(
+        plan(files.back(),
+             "--planner rrtconnect --certified-motions --free-samples --lean-angles 0.5" + shorter,
+             "sampler.json"));
     alone.push_back(sampler["counts"]["iterations"].get<size_t>());
     idle.push_back(plan(files.back(), "", family + seed + "-idle.json"));
     EXPECT_EQ(statisticsOf(idle.back())["solved_by"], alone.back() <= 2000 ? "rrtconnect" : "mms")
