@@ -284,3 +284,30 @@ TEST(Ompl, LeaningAnglesGoBothWaysForAHalfTurn) {
     EXPECT_GT(ways[1], 0u) << "swallow " << seed;
   }
 }
+
+// --range-share caps each motion of the tree at that share of the state space's extent: every
+// segment of RRT-Connect's path (consecutive states of its trees) is at most that long, which
+// the default's (0.2 of the extent) is not. One robot's extent: its box's diagonal and half a
+// turn's weight of the circle (OMPL's SE(2)).
+TEST(Ompl, RangeShareCapsEachMotion) {
+  const Scene s = openClutterScene(1);
+  ASSERT_EQ(s.robots.size(), 1u);
+  const double extent = std::hypot(s.bounds.width(), s.bounds.height()) + 0.5 * M_PI;
+  auto longest = [&](double share) {
+    OmplSettings st;
+    st.planner = "rrtconnect";
+    st.seed = 1;
+    st.certifiedMotions = st.freeSamples = true;
+    st.rangeShare = share;
+    const OmplResult r = planWithOmpl(s, st, Termination(planSeconds(20)));
+    EXPECT_EQ(r.status, PlanStatus::Found) << "share " << share;
+    double most = 0;
+    for (size_t k = 1; k < r.waypoints.size(); ++k) {
+      const Config &a = r.waypoints[k - 1], &b = r.waypoints[k];
+      most = std::max(most, std::hypot(b[0] - a[0], b[1] - a[1]) + 0.5 * std::fabs(b[2] - a[2]));
+    }
+    return most;
+  };
+  EXPECT_LE(longest(0.05), 0.05 * extent * (1 + 1e-9));
+  EXPECT_GT(longest(0), 0.05 * extent);
+}
