@@ -39,6 +39,14 @@ namespace og = ompl::geometric;
 
 namespace {
 
+// Every angle that reaches OMPL goes through here: OMPL's SO(2) is [-pi, pi) and asserts
+// on anything else (its distance, its interpolation), while std::remainder gives [-pi, pi]
+// and a scene's angles may be any number (a robot at 7.5 rad, or at pi from start to goal).
+double so2Angle(double theta) {
+  const double a = std::remainder(theta, 2 * M_PI);
+  return a >= M_PI ? -M_PI : a;
+}
+
 // State <-> configuration: robot i is component i (SE(2), or R^2 keeping its start angle).
 struct Layout {
   const Scene& scene;
@@ -76,8 +84,7 @@ struct Layout {
       } else {
         auto* r = c->as<ob::SE2StateSpace::StateType>(i);
         r->setXY(q[3 * i], q[3 * i + 1]);
-        r->setYaw(std::remainder(q[3 * i + 2], 2 * M_PI));  // OMPL's SO(2) is [-pi, pi)
-        if (r->getYaw() >= M_PI) r->setYaw(-M_PI);
+        r->setYaw(so2Angle(q[3 * i + 2]));
       }
     }
   }
@@ -221,7 +228,7 @@ class FreeSampler : public ob::StateSampler {
       if (rigid) {
         auto* se2 = c->as<ob::SE2StateSpace::StateType>(i);
         se2->setXY(p.x, p.y);
-        se2->setYaw(p.theta);
+        se2->setYaw(so2Angle(p.theta));
       } else {
         auto* rv = c->as<ob::RealVectorStateSpace::StateType>(i);
         rv->values[0] = p.x;
@@ -267,7 +274,7 @@ class FreeSampler : public ob::StateSampler {
       // A half turn is as short either way round: each draw takes one (a U that turns half
       // round about a part may fit only one way).
       if (std::fabs(turn) > M_PI - kHalfTurnSlack && draws_.below(2) == 0) turn = -turn;
-      return std::remainder(robot.start.theta + draws_.uniform() * turn, 2 * M_PI);
+      return robot.start.theta + draws_.uniform() * turn;  // so2Angle where it is set
     }
     return draws_.uniform(-M_PI, M_PI);
   }
