@@ -3,6 +3,7 @@
 #include "Cli.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -68,7 +69,7 @@ const CLI::Validator memoryLimitMb(
       if (!CLI::detail::lexical_cast(v, mb)) return "not a number: " + v;
       return mb == 0 || (mb >= 1 && mb <= 1e7) ? "" : "must be 0 (no limit) or 1 to 1e7 MB";
     },
-    "0|1..1e7");
+    "0 or 1 to 1e7");
 
 // Every planner's parameters, once per name (planners share some), with the planners that
 // take each.
@@ -94,6 +95,22 @@ std::string typeName(const mms::ParamSpec& spec) {
          mms::formatNumber(spec.min) + ", " + mms::formatNumber(spec.max) + "]";
 }
 
+// A number in [lo, hi], read as a person writes it ("NUMBER in [0.01, 1e+06]"): NaN and
+// infinity are refused, which CLI11's Range lets through (every comparison with NaN is false).
+CLI::Option* numberIn(CLI::Option* o, double lo, double hi) {
+  const std::string range = "[" + mms::formatNumber(lo) + ", " + mms::formatNumber(hi) + "]";
+  return o->type_name("NUMBER in " + range)
+      ->check(CLI::Validator(
+          [lo, hi, range](std::string& s) -> std::string {
+            double v = 0;
+            if (!CLI::detail::lexical_cast(s, v)) return "'" + s + "' is not a number";
+            if (!std::isfinite(v)) return "'" + s + "' is not a finite number";
+            if (v < lo || v > hi) return s + " is not in " + range;
+            return "";
+          },
+          ""));
+}
+
 CLI::Option* sceneArg(CLI::App* cmd, std::string& v, const std::string& help) {
   return cmd->add_option("SCENE", v, help)->required();
 }
@@ -117,7 +134,10 @@ void convertedOutput(CLI::App* cmd, std::string& output, bool& quiet, const std:
 }
 
 CLI::Option* memoryLimitOption(CLI::App* cmd, double& v, const std::string& help) {
-  return cmd->add_option("--memory-limit", v, help)->capture_default_str()->check(memoryLimitMb);
+  return cmd->add_option("--memory-limit", v, help)
+      ->capture_default_str()
+      ->type_name("MB")
+      ->check(memoryLimitMb);
 }
 CLI::Option* seedOption(CLI::App* cmd, uint64_t& v, const std::string& help) {
   // A negative seed would wrap round to a huge one silently.
@@ -225,7 +245,7 @@ class PlannerParamOptions {
       double v = 1;  // a flag given
       if (spec.type != mms::ParamSpec::Type::Flag)
         if (const std::string why = spec.parse(text_.at(spec.name), v); !why.empty())
-          throw mms::InputError("mms: --" + spec.name + ": " + why + " (see mms --help)");
+          throw mms::InputError("mms: --" + spec.name + ": " + why + " (see mms plan --help)");
       values[spec.name] = v;
     }
     return values;
@@ -256,10 +276,9 @@ Command addPlan(CLI::App& app) {
             "--svg", pa.svg,
             "Write an animated SVG of the scene and path here (-: standard output)");
         seedOption(planCmd, pa.seed, "Random seed (same seed, same path)");
-        planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
-            ->capture_default_str()
-            ->check(CLI::Number)
-            ->check(CLI::Range(0.01, 1e6));
+        numberIn(planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
+                     ->capture_default_str(),
+                 0.01, 1e6);
         memoryLimitOption(
             planCmd, pa.memoryMb,
             "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
@@ -328,9 +347,9 @@ Command addRender(CLI::App& app) {
       [](CLI::App* cmd, RenderArgs& a) {
         sceneAndPath(cmd, a.scene, a.path, "Scene file", "Path file to draw and animate");
         outputOption(cmd, a.output, "SVG file to write (-: standard output)");
-        cmd->add_option("--width", a.width, "Picture width in pixels")
-            ->capture_default_str()
-            ->check(CLI::Range(50.0, 20000.0));
+        numberIn(
+            cmd->add_option("--width", a.width, "Picture width in pixels")->capture_default_str(),
+            50, 20000);
         cmd->add_option("--ghosts", a.ghosts, "Faint robot poses drawn along the path")
             ->capture_default_str()
             ->check(CLI::Range(0, 1000));
@@ -436,10 +455,10 @@ Command addAssemble(CLI::App& app) {
         assembleCmd->add_option(
             "--svg", aa.svg, "Write an animated SVG of the whole disassembly (-: standard output)");
         seedOption(assembleCmd, aa.seed, "Random seed");
-        assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
-            ->capture_default_str()
-            ->check(CLI::Number)
-            ->check(CLI::Range(0.01, 1e7));
+        numberIn(
+            assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
+                ->capture_default_str(),
+            0.01, 1e7);
         memoryLimitOption(
             assembleCmd, aa.memoryMb,
             "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
@@ -489,12 +508,12 @@ Command addScenario(CLI::App& app) {
             ->required()
             ->check(CLI::IsMember(mms::scenarioNames()));
         outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");
-        scenarioCmd
-            ->add_option(
-                "--tightness", sa.tightness,
-                "pacman: 0 = the base scene, towards 1 = the square exactly fits the mouth")
-            ->capture_default_str()
-            ->check(CLI::Range(0.0, 0.999));
+        numberIn(scenarioCmd
+                     ->add_option("--tightness", sa.tightness,
+                                  "pacman: 0 = the base scene, towards 1 = the square exactly "
+                                  "fits the mouth")
+                     ->capture_default_str(),
+                 0, 0.999);
         seedOption(scenarioCmd, sa.seed,
                    "random-polygons, random and the generated families: the seed of the geometry");
         scenarioCmd
@@ -505,16 +524,16 @@ Command addScenario(CLI::App& app) {
                 "20, at most 2000); disc-box: how many discs (default 29), warehouse: how "
                 "many carts (default 20), at most 2000")
             ->check(CLI::Range(1, 2000));
-        scenarioCmd
-            ->add_option("--spacing", sa.spacing,
-                         "disc-grid: centres of neighbouring discs apart, in radii (3: dense, "
-                         "10: sparse; default 3, 5 or 10 from the seed)")
-            ->check(CLI::Range(2.05, 100.0));
+        numberIn(scenarioCmd->add_option(
+                     "--spacing", sa.spacing,
+                     "disc-grid: centres of neighbouring discs apart, in radii (3: dense, "
+                     "10: sparse; default 3, 5 or 10 from the seed)"),
+                 2.05, 100);
         scenarioCmd
             ->add_option("--obstacles", sa.obstacles,
                          "random: how many obstacles (default: from the seed)")
             ->check(CLI::Range(0, 100000));
-        auto* slackOption =
+        auto* slackOption = numberIn(
             scenarioCmd
                 ->add_option(
                     "--slack", sa.slack,
@@ -523,8 +542,8 @@ Command addScenario(CLI::App& app) {
                     "a share of its size (default: 0.04-0.1 from the seed; 0.5 is roomy); "
                     "keyhole and swallow: what the chamber's (the bay's) inscribed circle clears "
                     "the turning circle by (default: 0.03-0.12 from the seed)")
-                ->capture_default_str()
-                ->check(CLI::Range(0.001, 1.0));
+                ->capture_default_str(),
+            0.001, 1.0);
         scenarioCmd
             ->add_option(
                 "--translate", sa.translate,
@@ -606,10 +625,9 @@ Command addBench(CLI::App& app, const std::vector<std::string>& argv) {
         benchCmd->add_option("--runs", ba.runs, "Runs per scene and planner (seeds 1..N)")
             ->capture_default_str()
             ->check(CLI::Range(1, 100000));
-        benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")
-            ->capture_default_str()
-            ->check(CLI::Number)
-            ->check(CLI::Range(0.01, 1e6));
+        numberIn(benchCmd->add_option("--time-limit", ba.timeLimit, "Seconds per run")
+                     ->capture_default_str(),
+                 0.01, 1e6);
         memoryLimitOption(benchCmd, ba.memoryMb, "MB of address space per run (0: none)");
         benchCmd->add_option(
             "--sweep-pacman", ba.sweepPacman,
@@ -637,6 +655,20 @@ Command addBench(CLI::App& app, const std::vector<std::string>& argv) {
                            "Only rewrite the reports from the runs recorded in DIR");
       },
       run);
+}
+
+void refuseNonFiniteNumbers(CLI::App& app) {
+  const CLI::Validator finite(
+      [](std::string& s) -> std::string {
+        double v = 0;
+        return CLI::detail::lexical_cast(s, v) && !std::isfinite(v)
+                   ? "'" + s + "' is not a finite number"
+                   : "";
+      },
+      "");
+  for (CLI::App* sub : app.get_subcommands({}))
+    for (CLI::Option* o : sub->get_options())
+      if (o->get_type_name().rfind("FLOAT", 0) == 0) o->check(finite);
 }
 
 }  // namespace mms::cli

@@ -27,6 +27,10 @@ Command addImport(CLI::App& app);
 Command addExport(CLI::App& app);
 Command addLab(CLI::App& app);
 
+/// Every option of every subcommand that CLI11 reads as a floating-point number refuses NaN
+/// and infinity (those registered with a range already do, the others through this).
+void refuseNonFiniteNumbers(CLI::App& app);
+
 /// A CLI11 parse error as one line in the words of mms's other messages, with the name likely
 /// meant where a name was mistyped; `args` are the command line's arguments after the program.
 std::string parseErrorLine(const CLI::ParseError& e, const CLI::App& app,

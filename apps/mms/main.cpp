@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
                                          addImport(app),
                                          addExport(app),
                                          addLab(app)};
+  refuseNonFiniteNumbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -39,7 +40,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "mms: " << parseErrorLine(e, app, args) << " (see mms --help)\n";
+    // The help of the subcommand given, where one was: that is where its options are.
+    const std::vector<CLI::App*> given = app.get_subcommands();
+    const std::string help =
+        given.empty() ? "mms --help" : "mms " + given[0]->get_name() + " --help";
+    std::cerr << "mms: " << parseErrorLine(e, app, args) << " (see " << help << ")\n";
     return 2;
   }
   for (const Command& c : commands)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
 #include "Support.h"
@@ -59,7 +60,7 @@ TEST(CliInput, NegativeSeedAndNonNumericLimitsAreRefusedPlainly) {
   // A planner parameter out of its type says so in the same form.
   const test::Outcome half = run("plan " + test::quote(scene) + " --n-theta 1.5");
   EXPECT_EQ(half.code, 2);
-  EXPECT_EQ(half.err, "mms: --n-theta: not an integer (see mms --help)\n");
+  EXPECT_EQ(half.err, "mms: --n-theta: not an integer (see mms plan --help)\n");
   // plan and bench take the same limits.
   for (const std::string& cmd :
        std::vector<std::string>{"plan " + test::quote(scene), "bench " + test::quote(scene)}) {
@@ -270,4 +271,37 @@ TEST(CliInput, AMistypedNameGetsADidYouMean) {
   // Nothing near: no guess.
   const test::Outcome far = run("plan " + scene + " --planner xyz");
   EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}
+
+// Every numeric option of every command, as its --help lists it, refuses NaN and infinity with
+// exit 2 and one line naming it: CLI11's range checks let NaN through (every comparison with it
+// is false), so `--time-limit nan` once planned "within nan s" and broke mms bench's records.
+TEST(CliInput, EveryNumericOptionRefusesNanAndInfinity) {
+  const std::vector<std::string> commands = {"validate", "check",    "render", "plan",
+                                             "scenario", "assemble", "bench",  "bench-merge",
+                                             "view",     "import",   "export", "lab"};
+  const std::regex numeric("\\n  (--[a-z-]+) (NUMBER|FLOAT|INT|UINT|MB)");
+  // A valid first argument, so that what is refused is the option (plan reads its planners'
+  // parameters once the scene is known).
+  const std::string scene = test::quote(test::scenario("one-robot/bar-slot.json"));
+  size_t options = 0;
+  for (const std::string& command : commands) {
+    const std::string first = command == "scenario" ? "pacman"
+                              : command == "lab"    ? "passages"
+                                                    : scene;
+    const std::string help = run(command + " --help").out;
+    ASSERT_FALSE(help.empty()) << command;
+    for (std::sregex_iterator m(help.begin(), help.end(), numeric), end; m != end; ++m) {
+      const std::string option = (*m)[1];
+      ++options;
+      for (const char* value : {"nan", "inf", "-inf", "NaN"}) {
+        const test::Outcome r = run(command + " " + first + " " + option + " " + value);
+        EXPECT_EQ(r.code, 2) << command << " " << option << " " << value;
+        EXPECT_EQ(lines(r.err), 1u) << command << " " << option << " " << value << ": " << r.err;
+        EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+      }
+    }
+  }
+  // plan's time and memory limits, its planners' numeric parameters, render's width, ...
+  EXPECT_GT(options, 30u);
 }
