@@ -143,6 +143,7 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
     std::vector<double> solvedTimes, all, lengths, rotations, graphs, built, used;
     for (const RunRecord* r : g) {
       s.uncertified += r->status == "uncertified";
+      s.crashed += r->status == "crashed";
       if (r->status == "not_run") {
         ++s.notRun;
         all.push_back(std::numeric_limits<double>::infinity());
@@ -190,15 +191,15 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
 std::string markdownReport(const std::vector<Summary>& summaries, const std::string& heading) {
   std::ostringstream md;
   if (!heading.empty()) md << heading << "\n\n";
-  md << "| scene | planner | parameters | solved | mean ± stdev [s] (no min/max) | median [s] | "
-        "path length | rotation [rad] | graph size | peak memory [MB] |\n";
-  md << "|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "| scene | planner | parameters | solved | crashed | mean ± stdev [s] (no min/max) | "
+        "median [s] | path length | rotation [rad] | graph size | peak memory [MB] |\n";
+  md << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Summary& s : summaries) {
     md << "| " << s.scene << " | " << s.planner << " | "
        << (s.parameters.empty() ? "defaults" : s.parameters) << " | " << s.solved << "/" << s.runs;
     if (s.uncertified) md << " (" << s.uncertified << " uncertified)";
     if (s.notRun) md << " (" << s.notRun << " not run: median decided)";
-    md << " | ";
+    md << " | " << (s.crashed ? "**" + std::to_string(s.crashed) + "**" : "0") << " | ";
     // Fewer than three solved runs are not trimmed, and one run has no deviation; of three,
     // trimming leaves the middle one.
     if (s.solved == 1)
@@ -219,6 +220,17 @@ std::string markdownReport(const std::vector<Summary>& summaries, const std::str
   return md.str();
 }
 
+std::string crashReport(const std::vector<RunRecord>& runs) {
+  std::string line;
+  for (const RunRecord& r : runs) {
+    if (r.status != "crashed") continue;
+    line += (line.empty() ? "" : "; ") + r.scene + " " + r.planner +
+            (r.parameters.empty() ? "" : " (" + r.parameters + ")") + " seed " +
+            std::to_string(r.seed) + (r.detail.empty() ? "" : ": " + r.detail);
+  }
+  return line.empty() ? "" : "**Crashed runs** (bugs, not timeouts): " + line + ".\n";
+}
+
 namespace {
 // The better of two summaries of one scene: lower median, then more runs solved.
 bool better(const Summary& a, const Summary& b) {
@@ -228,7 +240,8 @@ bool better(const Summary& a, const Summary& b) {
 std::string medianText(const Summary& s) {
   return (s.medianSolved ? fmt("%.3g s", s.median) : "> " + fmt("%g s", s.timeLimit)) + ", " +
          std::to_string(s.solved) + "/" + std::to_string(s.runs) +
-         (s.notRun ? " (" + std::to_string(s.notRun) + " not run)" : "");
+         (s.notRun ? " (" + std::to_string(s.notRun) + " not run)" : "") +
+         (s.crashed ? ", " + std::to_string(s.crashed) + " crashed" : "");
 }
 std::string label(const Summary& s) {
   return s.planner + (s.parameters.empty() ? "" : " (" + s.parameters + ")");

@@ -44,7 +44,8 @@ struct Summary {
   std::string scene, planner, parameters;
   double tightness = -1, timeLimit = 0;
   size_t runs = 0, solved = 0, uncertified = 0;
-  size_t notRun = 0;  // skipped once the median was decided as unsolved; counted as unsolved
+  size_t notRun = 0;   // skipped once the median was decided as unsolved; counted as unsolved
+  size_t crashed = 0;  // a signal other than the time limit's kill, or an internal error (exit 3)
   double meanTrimmed = 0,
          stdevTrimmed = 0;  // over solved runs, without the fastest and slowest (paper's protocol)
   double median = 0;        // over all runs, an unsolved run counting as infinite
@@ -56,6 +57,9 @@ struct Summary {
 std::vector<Summary> summarize(const std::vector<RunRecord>& runs);
 
 std::string markdownReport(const std::vector<Summary>& summaries, const std::string& heading);
+/// A line naming every crashed run (scene, planner, seed, what happened), "" when none did: a
+/// crash is a bug, not a slow run, and must not read as a timeout.
+std::string crashReport(const std::vector<RunRecord>& runs);
 /// Per scene: MMS and the portfolio "auto" (each the best of its configurations) against the
 /// best other planner by median,
 /// with the speed-up (a lower bound where that planner's median is past the time limit) and

@@ -194,6 +194,7 @@ void writeBenchReports(const std::string& dir) {
   md += "\n## Every planner ranked\n\n" + rankingReport(summaries) +
         "\n![time per run](times.svg)\n\n![runs solved](success.svg)\n\n## All runs\n\n";
   md += markdownReport(fixed, "");
+  if (const std::string crashes = crashReport(unique); !crashes.empty()) md += "\n" + crashes;
   writeFileAtomically(dir + "/times.svg", timesPlot(unique));
   writeFileAtomically(dir + "/success.svg", successPlot(summaries));
   const std::string byRobots = robotsPlot(unique, false);
@@ -235,6 +236,20 @@ struct SceneEntry {
   size_t robots = 0;
 };
 
+// Runs are kept and resumed by scene name: two files of one name would share their runs (the
+// second never planned), so the clash is refused with both files named.
+void refuseNameClashes(const std::vector<SceneEntry>& scenes) {
+  std::map<std::string, const SceneEntry*> byName;
+  for (const SceneEntry& s : scenes) {
+    const auto [it, fresh] = byName.emplace(s.name, &s);
+    if (fresh) continue;
+    if (fs::weakly_canonical(it->second->file) == fs::weakly_canonical(s.file))
+      throw InputError(s.file + ": given twice to mms bench");
+    throw InputError(s.file + ": scene '" + s.name + "' is also " + it->second->file +
+                     "'s name (mms bench keeps runs by scene name): rename one");
+  }
+}
+
 // Scenes: the files given, plus generated Pacman scenes for a tightness sweep.
 std::vector<SceneEntry> benchScenes(const BenchSettings& a) {
   std::vector<SceneEntry> scenes;
@@ -262,6 +277,7 @@ std::vector<SceneEntry> benchScenes(const BenchSettings& a) {
   }
   for (SceneEntry& s : scenes)
     if (s.name.empty()) s.name = fs::path(s.file).stem().string();
+  refuseNameClashes(scenes);
   if (scenes.empty()) throw InputError("mms bench: no scenes (give scene files or --sweep-pacman)");
   return scenes;
 }

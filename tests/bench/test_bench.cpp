@@ -48,10 +48,27 @@ TEST(BenchReport, TrimmedMeanMedianAndFailures) {
   EXPECT_EQ(s[1].uncertified, 1u);
   EXPECT_FALSE(s[1].medianSolved);  // two of three unsolved: the median is a failure
   const std::string md = markdownReport(s, "");
-  EXPECT_NE(md.find("| s | a | defaults | 5/5 | 3 ± 1 | 3 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| s | a | defaults | 5/5 | 0 | 3 ± 1 | 3 |"), std::string::npos) << md;
   EXPECT_NE(md.find("1/3 (1 uncertified)"), std::string::npos);
   EXPECT_NE(md.find("> 60"), std::string::npos);
   EXPECT_EQ(lines(csvReport(runs)), runs.size() + 1);
+}
+
+// A crashed run (a signal, exit 3) is not a timeout: the table counts it in a column of its
+// own, the rankings say so, and a line under the table names each crashed run.
+TEST(BenchReport, CrashesHaveAColumnAndALineNamingTheRuns) {
+  std::vector<RunRecord> runs{run("a", 1, "crashed", 0.2), run("a", 2, "not_found", 3),
+                              run("b", 1, "found", 1), run("b", 2, "found", 1)};
+  runs[0].detail = "signal 6";
+  const std::vector<Summary> s = summarize(runs);
+  EXPECT_EQ(s[0].crashed, 1u);
+  EXPECT_EQ(s[1].crashed, 0u);
+  const std::string md = markdownReport(s, "");
+  EXPECT_NE(md.find("| s | a | defaults | 0/2 | **1** |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| s | b | defaults | 2/2 | 0 |"), std::string::npos) << md;
+  EXPECT_NE(rankingReport(s).find("> 60 s, 0/2, 1 crashed"), std::string::npos) << rankingReport(s);
+  EXPECT_EQ(crashReport(runs), "**Crashed runs** (bugs, not timeouts): s a seed 1: signal 6.\n");
+  EXPECT_EQ(crashReport({runs[1], runs[2]}), "");
 }
 
 TEST(BenchReport, OneRunHasNoDeviationAndUncertifiedRunsNoPathMeasures) {
@@ -370,4 +387,26 @@ TEST(BenchCommand, DefaultPlannersAndTheTimeItMayTake) {
   EXPECT_NE(report.find("![time per run](times.svg)"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(dir.path("b/times.svg")));
   EXPECT_TRUE(std::filesystem::exists(dir.path("b/success.svg")));
+}
+
+// Runs are kept by scene name: two files that name one scene would share their runs (the second
+// was never planned, "1 already recorded"). The clash is refused naming both files, and so is a
+// file given twice; nothing is written.
+TEST(BenchRunner, TwoScenesOfOneNameAreRefusedNamingBothFiles) {
+  const TempDir dir;
+  std::filesystem::create_directories(dir.path("dupA"));
+  std::filesystem::create_directories(dir.path("dupB"));
+  const std::string scene = readFile(scenario("one-robot/bar-slot.json"));
+  const std::string a = dir.file("dupA/s.json", scene), b = dir.file("dupB/s.json", scene);
+  const Outcome clash = runMms("bench " + quote(a) + " " + quote(b) +
+                               " --planners mms --runs 1 -o " + quote(dir.path("out")));
+  EXPECT_EQ(clash.code, 2) << clash.err;
+  EXPECT_EQ(lines(clash.err), 1u) << clash.err;
+  EXPECT_NE(clash.err.find(a), std::string::npos) << clash.err;
+  EXPECT_NE(clash.err.find(b), std::string::npos) << clash.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path("out/runs.jsonl")));
+  const Outcome twice = runMms("bench " + quote(a) + " " + quote(a) +
+                               " --planners mms --runs 1 -o " + quote(dir.path("out")));
+  EXPECT_EQ(twice.code, 2);
+  EXPECT_NE(twice.err.find("given twice"), std::string::npos) << twice.err;
 }
