@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unordered_set>
 
 namespace mms::json_in {
 
@@ -74,10 +75,97 @@ bool nestsDeeperThan(const std::string& text, int limit) {
 
 }  // namespace
 
+namespace {
+
+// nlohmann's DOM parser, with each object's keys checked for a second use: JSON allows a
+// duplicate key and nlohmann keeps the last, so two "bounds" would silently drop the first.
+// SAX rather than a parser callback, whose bookkeeping is quadratic in a long array of objects.
+class NoDuplicateKeys {
+ public:
+  explicit NoDuplicateKeys(Json& out) : dom_(out) {}
+  bool null() { return value(dom_.null()); }
+  bool boolean(bool v) { return value(dom_.boolean(v)); }
+  bool number_integer(Json::number_integer_t v) { return value(dom_.number_integer(v)); }
+  bool number_unsigned(Json::number_unsigned_t v) { return value(dom_.number_unsigned(v)); }
+  bool number_float(Json::number_float_t v, const std::string& s) {
+    return value(dom_.number_float(v, s));
+  }
+  bool string(std::string& v) { return value(dom_.string(v)); }
+  bool binary(Json::binary_t& v) { return value(dom_.binary(v)); }
+  bool start_object(std::size_t n) {
+    frames_.push_back({false, {}, {}, {}, 0});
+    return dom_.start_object(n);
+  }
+  bool key(std::string& k) {
+    Frame& f = frames_.back();
+    if (f.seen(k)) throw Duplicate{where() + (frames_.size() > 1 ? "." : "") + k};
+    f.key = k;
+    return dom_.key(k);
+  }
+  bool end_object() { return close(dom_.end_object()); }
+  bool start_array(std::size_t n) {
+    frames_.push_back({true, {}, {}, {}, 0});
+    return dom_.start_array(n);
+  }
+  bool end_array() { return close(dom_.end_array()); }
+  template <class Exception>
+  bool parse_error(std::size_t at, const std::string& token, const Exception& e) {
+    return dom_.parse_error(at, token, e);
+  }
+  struct Duplicate {
+    std::string where;
+  };
+
+ private:
+  struct Frame {
+    bool array;
+    std::string key;                // an object's: the key being read
+    std::vector<std::string> keys;  // an object's keys so far (a set past 32)
+    std::unordered_set<std::string> many;
+    size_t index;  // an array's: the element being read
+    bool seen(const std::string& k) {
+      if (many.empty() && keys.size() < 32) {
+        for (const std::string& x : keys)
+          if (x == k) return true;
+        keys.push_back(k);
+        return false;
+      }
+      if (many.empty()) many.insert(keys.begin(), keys.end());
+      return !many.insert(k).second;
+    }
+  };
+  bool value(bool ok) {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+    return ok;
+  }
+  bool close(bool ok) {
+    frames_.pop_back();
+    return value(ok);
+  }
+  // The JSON path of the object being read (robots[0].shape), as Node names fields.
+  std::string where() const {
+    std::string w;
+    for (size_t i = 0; i + 1 < frames_.size(); ++i) {
+      const Frame& f = frames_[i];
+      w += f.array ? "[" + std::to_string(f.index) + "]" : (w.empty() ? "" : ".") + f.key;
+    }
+    return w;
+  }
+  nlohmann::detail::json_sax_dom_parser<Json> dom_;
+  std::vector<Frame> frames_;
+};
+
+}  // namespace
+
 Json parseText(const std::string& text, const std::string& source) {
   try {
     if (nestsDeeperThan(text, kMaxDepth)) throw TooDeep{};
-    return Json::parse(text);
+    Json out;
+    NoDuplicateKeys sax(out);
+    Json::sax_parse(text, &sax);
+    return out;
+  } catch (const NoDuplicateKeys::Duplicate& d) {
+    throw InputError(source + ": " + d.where + ": given twice (a key may appear once)");
   } catch (const TooDeep&) {
     throw InputError(source + ": (document): JSON nested deeper than " + std::to_string(kMaxDepth) +
                      " levels");

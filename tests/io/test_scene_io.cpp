@@ -258,6 +258,39 @@ TEST(BadSceneText, NestingIsCountedOutsideStrings) {
   EXPECT_EQ(j.dump().size(), depth(60, brackets).size());
 }
 
+// JSON lets a key appear twice and nlohmann keeps the last: two "bounds" silently dropped the
+// first. Every reader refuses a key given twice in one object, naming where; the same key in
+// two objects, and values that repeat, are fine.
+TEST(BadSceneText, AKeyGivenTwiceInOneObjectIsRefusedNamingWhere) {
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({"format": "mms-scene/1", "bounds": [0, 0, 1, 1], "bounds": [0, 0, 9, 9]})", "bounds"},
+      {R"({"robots": [{"name": "a"}, {"name": "b", "start": [0, 0, 0], "name": "c"}]})",
+       "robots[1].name"},
+      {R"({"a": [[1, 2], [3, {"x": 1, "y": {"z": 1, "z": 2}}]]})", "a[1][1].y.z"},
+  };
+  for (const auto& [text, where] : cases) {
+    try {
+      json_in::parseText(text, "f.json");
+      ADD_FAILURE() << text << " was read";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                std::string("f.json: ") + where + ": given twice (a key may appear once)");
+    }
+  }
+  std::string many = "{";
+  for (int k = 0; k < 100; ++k) many += "\"k" + std::to_string(k) + "\": 1, ";
+  EXPECT_NO_THROW(json_in::parseText(many + "\"k100\": 1}", "f.json"));
+  EXPECT_THROW(json_in::parseText(many + "\"k7\": 1}", "f.json"), InputError);
+  const json_in::Json same = json_in::parseText(R"([{"a": 1}, {"a": 1, "b": {"a": 1}}])", "f.json");
+  EXPECT_EQ(same.dump(), R"([{"a":1},{"a":1,"b":{"a":1}}])");
+  // A scene file through the command line: exit 2 and the one line.
+  const test::TempDir dir;
+  const std::string file = dir.file("dup.json", cases[0].first);
+  const Outcome r = runMms("validate " + quote(file));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, file + ": bounds: given twice (a key may appear once)\n");
+}
+
 // Cases whose text is built at run time.
 TEST(BadSceneText, DeepNestingAndOverflow) {
   TempDir dir;
