@@ -71,18 +71,65 @@ const CLI::Validator memoryLimitMb(
     },
     "0 or 1 to 1e7");
 
-// Every planner's parameters, once per name (planners share some), with the planners that
-// take each.
-std::vector<std::pair<mms::ParamSpec, std::vector<std::string>>> declaredParams() {
-  std::vector<std::pair<mms::ParamSpec, std::vector<std::string>>> out;
+// A parameter as the planners declare it: the first declaration, and each planner that takes
+// it with its default there (planners share some, not always with one default).
+struct DeclaredParam {
+  mms::ParamSpec spec;
+  std::vector<std::pair<std::string, double>> users;
+};
+
+// Every planner's parameters, once per name.
+std::vector<DeclaredParam> declaredParams() {
+  std::vector<DeclaredParam> out;
   for (const mms::PlannerInfo& p : mms::planners())
     for (const mms::ParamSpec& spec : p.params) {
       auto it = std::find_if(out.begin(), out.end(),
-                             [&](const auto& e) { return e.first.name == spec.name; });
+                             [&](const auto& e) { return e.spec.name == spec.name; });
       if (it == out.end()) it = out.insert(out.end(), {spec, {}});
-      it->second.push_back(p.name);
+      it->users.emplace_back(p.name, spec.value);
     }
   return out;
+}
+
+// "auto, mms" or "every OMPL planner" (every planner but auto and MMS's, mms*).
+std::string plannerList(const std::vector<std::string>& names) {
+  auto ours = [](const std::string& n) { return n == "auto" || n.rfind("mms", 0) == 0; };
+  const auto& all = mms::planners();
+  const size_t ompl =
+      size_t(std::count_if(all.begin(), all.end(), [&](const auto& p) { return !ours(p.name); }));
+  if (names.size() == ompl && std::none_of(names.begin(), names.end(), ours))
+    return "every OMPL planner";
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
+
+// A parameter's help with the planners that take it and, where their defaults differ, each
+// default with its planners in place of the declaration's one "(default X)".
+std::string paramHelp(const DeclaredParam& d) {
+  std::vector<std::pair<double, std::vector<std::string>>> byDefault;
+  std::vector<std::string> all;
+  for (const auto& [name, value] : d.users) {
+    all.push_back(name);
+    auto it = std::find_if(byDefault.begin(), byDefault.end(),
+                           [v = value](const auto& e) { return e.first == v; });
+    if (it == byDefault.end()) it = byDefault.insert(byDefault.end(), {value, {}});
+    it->second.push_back(name);
+  }
+  std::string help = d.spec.help;
+  if (byDefault.size() > 1) {
+    if (const size_t at = help.rfind(" (default "); at != std::string::npos && help.back() == ')')
+      help.erase(at);
+    std::string defaults;
+    for (const auto& [value, names] : byDefault) {
+      const std::string shown =
+          d.spec.choices.empty() ? mms::formatNumber(value) : d.spec.choices.at(size_t(value));
+      defaults += (defaults.empty() ? "" : "; ") + shown + " for " + plannerList(names);
+    }
+    help += " (default " + defaults + ")";
+  }
+  if (all.size() < mms::planners().size()) help += " [" + plannerList(all) + "]";
+  return help;
 }
 
 std::string typeName(const mms::ParamSpec& spec) {
@@ -224,12 +271,9 @@ struct BenchOptions : BenchArgs {
 class PlannerParamOptions {
  public:
   explicit PlannerParamOptions(CLI::App* cmd) {
-    const size_t omplPlanners = mms::planners().size() - 2;  // all but auto and mms
-    for (const auto& [spec, users] : declaredParams()) {
-      std::string help = spec.help, list;
-      for (const std::string& u : users) list += (list.empty() ? "" : ", ") + u;
-      if (users.size() == omplPlanners && users.front() != "auto") list = "every OMPL planner";
-      if (users.size() < mms::planners().size()) help += " [" + list + "]";
+    for (const DeclaredParam& d : declaredParams()) {
+      const mms::ParamSpec& spec = d.spec;
+      const std::string help = paramHelp(d);
       CLI::Option* o = spec.type == mms::ParamSpec::Type::Flag
                            ? cmd->add_flag("--" + spec.name, flag_[spec.name], help)
                            : cmd->add_option("--" + spec.name, text_[spec.name], help)
@@ -382,10 +426,11 @@ Command addImport(CLI::App& app) {
       importScene, [](CLI::App* cmd, ImportArgs& a) {
         cmd->add_option("FILE", a.input, "OMPL.app .cfg or discopygal .json")->required();
         convertedOutput(cmd, a.output, a.quiet, "Scene file");
-        cmd->add_option("--bounds", a.bounds,
-                        "XMIN,YMIN,XMAX,YMAX: the workspace, instead of the one the file gives "
-                        "(discopygal scenes give none: by default the box around obstacles and "
-                        "robots, grown by 5 %)");
+        cmd->add_option(
+            "--bounds", a.bounds,
+            "XMIN,YMIN,XMAX,YMAX: the workspace, instead of the one the file gives "
+            "(discopygal scenes give none: by default the box around obstacles and "
+            "robots, grown on every side by the largest robot's diameter and 10 % more)");
       });
 }
 
@@ -485,10 +530,14 @@ constexpr const char* kScenarioSummary =
     "--slack: a key passes a keyhole, turns a quarter in a chamber barely larger than its "
     "turn, and leaves through a side slot), swallow (--seed, --slack: a U takes a part into "
     "its mouth and turns half round about it in a bay barely larger than that turn), "
+    "swallow-two (--seed, --slack: the same with the part a robot too, which waits while the U "
+    "turns about it and then leaves the other way), "
     "disc-grid (--seed, --robots, --spacing: unit discs on a grid go to the same grid moved "
     "aside), disc-triangles (--seed, --robots: unit discs among random triangles) or disc-box "
     "(--seed, --robots: discs of radius 0.5 packed touching in a walled box, shuffled) or "
-    "warehouse (--seed, --robots: rectangular carts among shelves turn where there is room)";
+    "warehouse (--seed, --robots: rectangular carts among shelves turn where there is room); "
+    "round-room (--seed, --robots: 3-5 discs that nearly fill a round room go round to each "
+    "other's places)";
 
 Command addScenario(CLI::App& app) {
   auto run = [](ScenarioArgs& a, const CLI::Option* slackOption) {
@@ -503,8 +552,9 @@ Command addScenario(CLI::App& app) {
             ->add_option("NAME", sa.name,
                          "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
                          "carry-turn, niche-swap, niche-three, discs-swap, discs-room, "
-                         "open-clutter, bend, doors, keyhole, swallow, disc-grid, disc-triangles, "
-                         "disc-box or warehouse")
+                         "open-clutter, bend, doors, keyhole, swallow, swallow-two, disc-grid, "
+                         "disc-triangles, "
+                         "disc-box, warehouse or round-room")
             ->required()
             ->check(CLI::IsMember(mms::scenarioNames()));
         outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");
@@ -520,7 +570,8 @@ Command addScenario(CLI::App& app) {
             ->add_option(
                 "--robots", sa.robots,
                 "random: 1 or 2 robots (default: from the seed); discs-room: how many discs "
-                "(default 10, at most 16); disc-grid, disc-triangles: how many discs (default "
+                "(default 10, at most 16); round-room: how many discs (default 3-5 from the seed, "
+                "2-16); disc-grid, disc-triangles: how many discs (default "
                 "20, at most 2000); disc-box: how many discs (default 29), warehouse: how "
                 "many carts (default 20), at most 2000")
             ->check(CLI::Range(1, 2000));
@@ -540,7 +591,8 @@ Command addScenario(CLI::App& app) {
                     "assembly-1/2: the play between parts and walls, at most 0.15 (the "
                     "smaller, the tighter); niche-swap and carry-turn: the play around a robot, "
                     "a share of its size (default: 0.04-0.1 from the seed; 0.5 is roomy); "
-                    "keyhole and swallow: what the chamber's (the bay's) inscribed circle clears "
+                    "keyhole, swallow and swallow-two: what the chamber's (the bay's) inscribed "
+                    "circle clears "
                     "the turning circle by (default: 0.03-0.12 from the seed)")
                 ->capture_default_str(),
             0.001, 1.0);

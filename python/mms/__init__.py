@@ -88,9 +88,11 @@ def scenario(name: str, *, seed: int = 1, tightness: float = 0.0, slack: float |
     pacman (tightness), viking-helmet, random-polygons (seed), assembly-1 and assembly-2
     (slack), random (seed, robots, obstacles) and the generated families carry-turn (slack),
     niche-swap (slack), niche-three, discs-swap, discs-room (robots), open-clutter, bend, doors
-    keyhole (slack) and swallow (slack) (seed), and many discs: disc-grid (robots, spacing: the
+    keyhole (slack), swallow and swallow-two (slack: in swallow-two the part is a robot too)
+    (seed), and many discs: disc-grid (robots, spacing: the
     grid's centres apart in radii), disc-triangles (robots), disc-box (robots: exact discs
-    packed touching in a walled box) and warehouse (robots: rectangular carts among shelves). translate names robots that only translate (each must keep its angle from
+    packed touching in a walled box), warehouse (robots: rectangular carts among shelves) and
+    round-room (robots: 3-5 discs nearly filling a round room go round to each other's places). translate names robots that only translate (each must keep its angle from
     start to goal). Raises InputError for an unknown name or a setting out of range."""
     r = _mms.ScenarioRequest()
     r.name = _text(name, "mms.scenario: name")

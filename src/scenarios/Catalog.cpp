@@ -14,11 +14,12 @@ namespace mms {
 
 const std::vector<std::string>& scenarioNames() {
   static const std::vector<std::string> names{
-      "pacman",      "viking-helmet",  "random-polygons", "assembly-1",
-      "assembly-2",  "random",         "carry-turn",      "niche-swap",
-      "niche-three", "discs-swap",     "discs-room",      "open-clutter",
-      "bend",        "doors",          "keyhole",         "swallow",
-      "disc-grid",   "disc-triangles", "disc-box",        "warehouse"};
+      "pacman",      "viking-helmet", "random-polygons", "assembly-1",
+      "assembly-2",  "random",        "carry-turn",      "niche-swap",
+      "niche-three", "discs-swap",    "discs-room",      "open-clutter",
+      "bend",        "doors",         "keyhole",         "swallow",
+      "swallow-two", "disc-grid",     "disc-triangles",  "disc-box",
+      "warehouse",   "round-room"};
   return names;
 }
 
@@ -81,10 +82,12 @@ Scene generate(const ScenarioRequest& r) {
   if (n == "carry-turn") return carryTurnScene(r.seed, r.slackGiven ? r.slack : -1);
   if (n == "keyhole") return keyholeScene(r.seed, r.slackGiven ? r.slack : -1);
   if (n == "swallow") return swallowScene(r.seed, r.slackGiven ? r.slack : -1);
+  if (n == "swallow-two") return swallowScene(r.seed, r.slackGiven ? r.slack : -1, true);
   if (n == "niche-swap") return nicheSwapScene(r.seed, r.slackGiven ? r.slack : -1);
   if (n == "niche-three") return nicheThreeScene(r.seed);
   if (n == "discs-swap") return discsSwapScene(r.seed);
   if (n == "discs-room") return discsRoomScene(r.seed, r.robots > 0 ? size_t(r.robots) : 10);
+  if (n == "round-room") return roundRoomScene(r.seed, size_t(r.robots));
   if (n == "open-clutter") return openClutterScene(r.seed);
   if (n == "disc-grid")
     return discGridScene(r.seed, r.robots > 0 ? size_t(r.robots) : 20, r.spacing);
@@ -98,6 +101,27 @@ Scene generate(const ScenarioRequest& r) {
 }
 }  // namespace
 
+// The settings a family takes beyond its seed; one given to a family that does not take it is
+// refused rather than silently ignored (keyhole --tightness 0.5 made the keyhole it always does).
+void refuseSettingsNotTaken(const ScenarioRequest& r, const std::string& prefix) {
+  const std::string& n = r.name;
+  const bool slack = n == "assembly-1" || n == "assembly-2" || n == "carry-turn" ||
+                     n == "niche-swap" || n == "keyhole" || n == "swallow" || n == "swallow-two";
+  const bool robots = n == "random" || n == "discs-room" || n == "round-room" || n == "disc-grid" ||
+                      n == "disc-triangles" || n == "disc-box" || n == "warehouse";
+  const std::pair<bool, const char*> given[] = {
+      {r.tightness != 0 && n != "pacman", "tightness"},
+      {r.slackGiven && !slack, "slack"},
+      {r.robots != 0 && !robots, "robots"},
+      {r.obstacles != -1 && n != "random", "obstacles"},
+      {r.spacing != 0 && n != "disc-grid", "spacing"},
+      {r.mPartsOnly && n != "assembly-2", "m-parts-only"}};
+  for (const auto& [refused, setting] : given)
+    if (refused)
+      throw InputError(prefix + setting + ": scenario " + n + " does not take it (mms scenario " +
+                       "--help says which families take which settings)");
+}
+
 Scene makeScenario(const ScenarioRequest& r, const std::string& prefix) {
   bool known = false;
   std::string list;
@@ -108,6 +132,7 @@ Scene makeScenario(const ScenarioRequest& r, const std::string& prefix) {
   if (!known)
     throw InputError("scenario '" + r.name + "': unknown (known: " + list + ")" +
                      didYouMean(r.name, scenarioNames()));
+  refuseSettingsNotTaken(r, prefix);
   requireRange(prefix, "tightness", r.tightness, 0, 0.999);
   requireRange(prefix, "slack", r.slack, 0.001, 1);
   const bool manyDiscs = r.name == "disc-grid" || r.name == "disc-triangles" ||
@@ -118,6 +143,9 @@ Scene makeScenario(const ScenarioRequest& r, const std::string& prefix) {
   if ((r.name == "assembly-1" || r.name == "assembly-2") && r.slack > 0.15)
     throw InputError(prefix + "slack: " + formatNumber(r.slack) + " is more than " + r.name +
                      "'s largest play, 0.15");
+  if (r.name == "round-room" && r.robots == 1)
+    throw InputError(prefix + "robots: 1 disc; a round room's discs go round to each other's " +
+                     "places, so it takes 2 or more");
   if (r.name == "random" && r.robots > 2)
     throw InputError(prefix + "robots: " + std::to_string(r.robots) +
                      " robots; the random test scene has 1 or 2 (discs-room takes more)");

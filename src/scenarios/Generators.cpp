@@ -498,6 +498,45 @@ Scene discsSwapScene(uint64_t seed) {
   return scene;
 }
 
+Scene roundRoomScene(uint64_t seed, size_t count) {
+  Random rng(seed);
+  const size_t n = count ? count : 3 + rng.below(3);
+  // The room: a ring of 16-24 blocks whose inner faces are tangent to a circle of radius `room`
+  // (the polygon's apothem). A disc centre within room - r of the middle clears every block.
+  const int blocks = 16 + int(rng.below(9));
+  const double room = 5, wall = rng.uniform(0.6, 1.2), turn = rng.uniform(0, 2 * M_PI);
+  // The discs' places: on a circle as far out as leaves each a little play (0.02-0.3 radii) to
+  // the wall, so neighbours sit 2.2-2.6 radii apart or more; a disc that must cross the middle
+  // may find the middle too narrow to pass the others (its free centre is 1.9-2.5 radii wide).
+  // More than five discs get smaller so that they fit on the circle 1.1 diameters apart.
+  const double fit = n > 2 ? 1.1 / std::sin(M_PI / double(n)) : 1.1;
+  const double r = std::min(room / rng.uniform(2.9, 3.5), room / (1.05 + fit));
+  const double ring = std::max(room - r * (1 + rng.uniform(0.02, 0.3)), fit * r);
+  Scene scene;
+  scene.name = "round-room-" + std::to_string(seed);
+  const double outer = (room + wall) / std::cos(M_PI / blocks) + 0.1;
+  scene.bounds = {-outer, -outer, outer, outer};
+  const double in = room / std::cos(M_PI / blocks), out = (room + wall) / std::cos(M_PI / blocks);
+  for (int b = 0; b < blocks; ++b) {
+    const double a0 = turn + 2 * M_PI * b / blocks, a1 = turn + 2 * M_PI * (b + 1) / blocks;
+    scene.obstacles.push_back({{in * std::cos(a0), in * std::sin(a0)},
+                               {in * std::cos(a1), in * std::sin(a1)},
+                               {out * std::cos(a1), out * std::sin(a1)},
+                               {out * std::cos(a0), out * std::sin(a0)}});
+  }
+  // Each disc goes `shift` places round (to where another starts); half round when n is even
+  // with even odds, as in discopygal's four discs in a circular room.
+  const size_t shift = (n % 2 == 0 && rng.uniform() < 0.5) ? n / 2 : 1 + rng.below(n - 1);
+  const double phase = rng.uniform(0, 2 * M_PI);
+  auto place = [&](size_t i) {
+    const double a = phase + 2 * M_PI * double(i) / double(n);
+    return Vec2{ring * std::cos(a), ring * std::sin(a)};
+  };
+  for (size_t i = 0; i < n; ++i)
+    scene.robots.push_back(discRobot(i, r, place(i), place((i + shift) % n)));
+  return scene;
+}
+
 Scene discsRoomScene(uint64_t seed, size_t count) {
   Random rng(seed);
   const double half = 1.6 * std::sqrt(double(count)) + 1;

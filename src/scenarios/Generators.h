@@ -60,7 +60,9 @@ Scene keyholeScene(uint64_t seed, double slack = -1);
 /// behind. Random per seed: the part's shape, size and angle, the U's arms, back, reach and play
 /// round the part, the corridor's slack, the bay's sides, the sense of the turn and a quarter
 /// turn of the whole.
-Scene swallowScene(uint64_t seed, double slack = -1);
+/// `partMoves`: the part is a robot instead of an obstacle (swallow-two): it waits at the bay's
+/// centre while the U turns about it, then leaves for the corridor the U came from.
+Scene swallowScene(uint64_t seed, double slack = -1, bool partMoves = false);
 
 /// The way through a swallow scene its generator built it for (uncertified: the path checker
 /// says whether it is free): the U goes straight to the part, turns half round about the part's
@@ -88,6 +90,14 @@ Scene nicheThreeScene(uint64_t seed);
 /// round the ring, to where another starts. The band between the block and the walls is
 /// 4.15-4.6 radii wide: two discs pass each other only just. Random per seed: all of these.
 Scene discsSwapScene(uint64_t seed);
+
+/// A round room: `count` translating discs (3-5 from the seed when 0) of one radius, a third to
+/// a 3.5th of the room's, on a circle inside a ring of 16-24 blocks (a polygonal room of
+/// apothem 5), each going a number of places round (half round with even odds when `count` is
+/// even: discopygal's four discs in a circular room). The discs nearly fill the room, which
+/// they can always cross by turning round together. Random per seed: the radius, the
+/// blocks' count, width and angle, the discs' circle, phase and shift.
+Scene roundRoomScene(uint64_t seed, size_t count = 0);
 
 /// `count` translating discs (radii 0.3-0.5) in an open square room sized for them, with 3-6
 /// random convex obstacles, apart from each other and from the walls by more than a disc's

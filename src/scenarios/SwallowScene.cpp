@@ -60,7 +60,7 @@ Ring upperWall(double half, double bay, unsigned n, double end, double top) {
 
 }  // namespace
 
-Scene swallowScene(uint64_t seed, double slack) {
+Scene swallowScene(uint64_t seed, double slack, bool partMoves) {
   Random rng(seed);
   const double r = rng.uniform(0.3, 0.5);  // the part's circle
   const double play = r * rng.uniform(0.04, 0.12), arm = rng.uniform(0.12, 0.25),
@@ -96,7 +96,7 @@ Scene swallowScene(uint64_t seed, double slack) {
   for (const Vec2& v : part)
     placed.push_back({v.x * std::cos(angle) - v.y * std::sin(angle),
                       v.x * std::sin(angle) + v.y * std::cos(angle)});
-  scene.obstacles.push_back(placed);
+  if (!partMoves) scene.obstacles.push_back(placed);
   // The U waits in the corridor on the left, mouth first, and ends in the one on the right, mouth
   // last: half a turn, made in the bay about the part.
   const double clear = bay + 0.1;
@@ -122,6 +122,17 @@ Scene swallowScene(uint64_t seed, double slack) {
   gripper.start = placePose(gripper.start);
   gripper.goal = placePose(gripper.goal);
   scene.robots = {gripper};
+  if (partMoves) {
+    // The part is a robot too: it waits at the bay's centre while the U turns about it, then
+    // leaves for the corridor the U came from (at its own angle, which the corridor allows).
+    scene.name = "swallow-two-" + std::to_string(seed);
+    Robot held;
+    held.name = "part";
+    held.shape = part;
+    held.start = placePose({0, 0, angle});
+    held.goal = placePose({-clear - r, 0, angle});
+    scene.robots.push_back(held);
+  }
   return scene;
 }
 

@@ -305,3 +305,22 @@ TEST(CliInput, EveryNumericOptionRefusesNanAndInfinity) {
   // plan's time and memory limits, its planners' numeric parameters, render's width, ...
   EXPECT_GT(options, 30u);
 }
+
+// A parameter whose default differs between planners says each default with its planners
+// (--optimize is on for MMS's planners, off for OMPL's); one the planners share says one.
+TEST(CliInput, PlanHelpGivesEachPlannersDefault) {
+  std::string help;  // unwrapped: the help wraps its lines to the terminal
+  for (const char c : run("plan --help").out)
+    if (c != '\n' && !(c == ' ' && !help.empty() && help.back() == ' ')) help += c;
+  const size_t at = help.find("--optimize INT");
+  ASSERT_NE(at, std::string::npos) << help;
+  const std::string line = help.substr(at, help.find("--objective", at) - at);
+  EXPECT_NE(line.find("(default 1 for auto, mms, mms-ordered, mms-joint; 0 for every OMPL "
+                      "planner)"),
+            std::string::npos)
+      << line;
+  EXPECT_EQ(line.find("(default 1)"), std::string::npos) << line;
+  const size_t restarts = help.find("--restarts INT");
+  ASSERT_NE(restarts, std::string::npos);
+  EXPECT_NE(help.find("(default 0)", restarts), std::string::npos);
+}

@@ -564,6 +564,7 @@ TEST(Import, DiscopygalBoundsLetEveryRobotPassRoundEverything) {
        at = r.err.find("bounds:", at + 1))
     ++said;
   EXPECT_EQ(said, 1u) << r.err;
+  const std::string note = r.err;
   const Scene s = loadScene(out);
   // Round the wall's end: a corridor at least a diameter (2) wide beyond x = 10 and x = 0.
   EXPECT_GE(s.bounds.xmax - 10, 2.0);
@@ -572,6 +573,14 @@ TEST(Import, DiscopygalBoundsLetEveryRobotPassRoundEverything) {
   r = runMms("plan " + quote(out) + " --planner mms --seed 1 --time-limit 30 -o " + quote(path));
   EXPECT_EQ(r.code, 0) << r.err << r.out;
   EXPECT_TRUE(std::filesystem::exists(path));
+  // The note and mms import --help say the same growth.
+  const std::string growth = "largest robot's diameter and 10 % more";
+  EXPECT_NE(note.find(growth), std::string::npos) << note;
+  const auto help = runMms("import --help");
+  std::string flat;  // the help wraps its lines
+  for (const char c : help.out)
+    if (c != '\n' && !(c == ' ' && !flat.empty() && flat.back() == ' ')) flat += c;
+  EXPECT_NE(flat.find(growth), std::string::npos) << help.out;
 }
 
 }  // namespace

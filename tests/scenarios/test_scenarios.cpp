@@ -265,6 +265,48 @@ TEST(ScenarioDiscs, SwapAndRoomScenesAreValidAndDeterministic) {
   EXPECT_EQ(sceneToJson(discsRoomScene(3)), sceneToJson(discsRoomScene(3)));
 }
 
+// A round room: valid, its discs each going to where another starts, and the way its generator
+// promises (all turning round the middle together, in steps of half a degree) certified by the
+// path checker; --robots sets the count, smaller discs for more.
+TEST(ScenarioDiscs, RoundRoomDiscsCrossByTurningTogether) {
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    for (const size_t count : {size_t(0), size_t(2), size_t(8)}) {
+      SCOPED_TRACE(std::to_string(seed) + " " + std::to_string(count));
+      const Scene s = roundRoomScene(seed, count);
+      ASSERT_NO_THROW(parseScene(sceneToJson(s), s.name));
+      const size_t n = s.robots.size();
+      if (count) {
+        EXPECT_EQ(n, count);
+      } else {
+        EXPECT_TRUE(n >= 3 && n <= 5) << n;
+      }
+      const double a0 = std::atan2(s.robots[0].start.y, s.robots[0].start.x);
+      const double a1 = std::atan2(s.robots[0].goal.y, s.robots[0].goal.x);
+      const double turn = std::remainder(a1 - a0, 2 * M_PI) < 0
+                              ? std::remainder(a1 - a0, 2 * M_PI) + 2 * M_PI
+                              : std::remainder(a1 - a0, 2 * M_PI);
+      const int steps = int(std::ceil(turn / (M_PI / 360)));
+      std::vector<Config> way;
+      for (int k = 0; k <= steps; ++k) {
+        const double c = std::cos(turn * k / steps), sn = std::sin(turn * k / steps);
+        Config q;
+        for (const Robot& r : s.robots)
+          q.insert(q.end(), {c * r.start.x - sn * r.start.y, sn * r.start.x + c * r.start.y, 0});
+        way.push_back(q);
+      }
+      for (size_t i = 0; i < n; ++i) {
+        EXPECT_NEAR(way.back()[3 * i], s.robots[i].goal.x, 1e-9);
+        EXPECT_NEAR(way.back()[3 * i + 1], s.robots[i].goal.y, 1e-9);
+      }
+      const PathCheckResult c = checkPath(s, CollisionChecker(s), way);
+      EXPECT_TRUE(c.ok) << c.reason;
+    }
+  }
+  EXPECT_EQ(sceneToJson(roundRoomScene(3)), sceneToJson(roundRoomScene(3)));
+  EXPECT_NE(sceneToJson(roundRoomScene(3)), sceneToJson(roundRoomScene(4)));
+  EXPECT_EQ(test::runMms("scenario round-room --robots 1 -o /dev/null").code, 2);
+}
+
 // Doors: lined up with the door (angle 0) the robot slides through each wall, and turns in the
 // rooms' middles: a constructed path, certified on seeds 1-10. Across (a quarter turn) it does
 // not fit a door: it must line up.
@@ -409,6 +451,52 @@ TEST(ScenarioSwallow, EverySeedTurnsHalfRoundAboutThePartAndNotAboutItsReference
   EXPECT_NE(sceneToJson(tight), sceneToJson(loose));
   const Scene tightest = swallowScene(4, 0.001);
   EXPECT_TRUE(checkPath(tightest, CollisionChecker(tightest), swallowWitness(tightest)).ok);
+}
+
+// The two-robot swallow is the swallow with its part a robot: the same U, bay and part, the part
+// waiting at the bay's centre while the U turns about it, then leaving the other way.
+TEST(ScenarioSwallow, TwoRobotsTheUTurnsAboutThePartWhichThenLeaves) {
+  for (uint64_t seed = 1; seed <= 8; ++seed) {
+    SCOPED_TRACE(seed);
+    const Scene one = swallowScene(seed), s = swallowScene(seed, -1, true);
+    ASSERT_NO_THROW(parseScene(sceneToJson(s), "swallow-two"));
+    ASSERT_EQ(s.robots.size(), 2u);
+    EXPECT_EQ(s.obstacles.size() + 1, one.obstacles.size());  // the part moved to the robots
+    EXPECT_EQ(s.robots[0].shape, one.robots[0].shape);
+    const Robot& part = s.robots[1];
+    const Ring placed = placedRing(part.shape, part.start), fixed = one.obstacles.back();
+    ASSERT_EQ(placed.size(), fixed.size());
+    for (size_t i = 0; i < placed.size(); ++i) {
+      EXPECT_NEAR(placed[i].x, fixed[i].x, 1e-9);
+      EXPECT_NEAR(placed[i].y, fixed[i].y, 1e-9);
+    }
+    // The U's witness with the part held still, then the part's straight way to its goal.
+    std::vector<Config> w;
+    for (const Config& u : swallowWitness(s))
+      w.push_back({u[0], u[1], u[2], part.start.x, part.start.y, part.start.theta});
+    Config last = w.back();
+    last[3] = part.goal.x, last[4] = part.goal.y, last[5] = part.goal.theta;
+    w.push_back(last);
+    const PathCheckResult c = checkPath(s, CollisionChecker(s), w);
+    EXPECT_TRUE(c.ok) << c.reason;
+    // The part cannot leave first: the U stands in the corridor it leaves by.
+    Config first = w.front();
+    first[3] = part.goal.x, first[4] = part.goal.y;
+    EXPECT_FALSE(checkPath(s, CollisionChecker(s), {w.front(), first}).ok);
+  }
+}
+
+// Settings a family does not take are refused, not silently ignored.
+TEST(ScenarioCatalog, SettingsAFamilyDoesNotTakeAreRefused) {
+  const test::Outcome tight = test::runMms("scenario keyhole --tightness 0.5 -o /dev/null");
+  EXPECT_EQ(tight.code, 2);
+  EXPECT_NE(tight.err.find("--tightness: scenario keyhole does not take it"), std::string::npos)
+      << tight.err;
+  EXPECT_EQ(test::runMms("scenario pacman --robots 3 -o /dev/null").code, 2);
+  EXPECT_EQ(test::runMms("scenario bend --slack 0.1 -o /dev/null").code, 2);
+  EXPECT_EQ(test::runMms("scenario open-clutter --spacing 3 -o /dev/null").code, 2);
+  EXPECT_EQ(test::runMms("scenario swallow-two --slack 0.05 -o /dev/null").code, 0);
+  EXPECT_EQ(test::runMms("scenario disc-grid --robots 30 --spacing 3 -o /dev/null").code, 0);
 }
 
 // Carry-turn's play can be asked for (down to a tight grip): the scene's seed draws the rest.
