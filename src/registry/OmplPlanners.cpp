@@ -24,8 +24,12 @@ PlanStatistics statistics(const OmplResult& r) {
 
 class OmplAdapter : public Planner {
  public:
-  OmplAdapter(const Scene& scene, OmplSettings settings, std::map<std::string, double> parameters)
-      : scene_(scene), settings_(std::move(settings)), parameters_(std::move(parameters)) {}
+  OmplAdapter(const Scene& scene, OmplSettings settings, std::map<std::string, double> parameters,
+              std::vector<ParamSpec> specs)
+      : scene_(scene),
+        settings_(std::move(settings)),
+        parameters_(std::move(parameters)),
+        specs_(std::move(specs)) {}
 
   PlanResult solve(const Termination& stop, const Progress& progress) override {
     OmplProgress onProgress;
@@ -43,6 +47,7 @@ class OmplAdapter : public Planner {
                         {"certify", r.seconds - r.setupSeconds - r.solveSeconds}};
     if (settings_.simplify) out.stats.phases.emplace_back("simplify", r.simplifySeconds);
     out.parameters = parameters_;
+    out.parameterSpecs = specs_;  // a flag is written as one wherever the result goes
     if (settings_.record) {
       auto record = std::make_shared<PlanRecord>();
       record->planner = settings_.planner;
@@ -60,6 +65,7 @@ class OmplAdapter : public Planner {
   Scene scene_;
   OmplSettings settings_;
   std::map<std::string, double> parameters_;
+  std::vector<ParamSpec> specs_;
 };
 
 struct Entry {
@@ -200,7 +206,7 @@ std::vector<PlannerInfo> omplPlannerInfos() {
         if (spec.name == "free-samples") s.freeSamples = v != 0;
         if (spec.name == "lean-angles") s.leanAngles = v;
       }
-      return std::make_unique<OmplAdapter>(scene, s, std::move(used));
+      return std::make_unique<OmplAdapter>(scene, s, std::move(used), specs);
     };
     out.push_back(std::move(info));
   }

@@ -9,6 +9,7 @@
 // roadmap and often a different way round the obstacles), each path is optimised too, and the
 // best is kept (phase "restarts"): anytime improvement that stays the same for the same seed, as
 // long as the time limit does not cut it.
+#include <algorithm>
 #include <functional>
 #include <memory>
 
@@ -60,7 +61,14 @@ class Optimizing final : public Planner {
     freeDeferred();
     PlanResult r = inner_->solve(stop, progress);
     for (const auto& [k, v] : parameters_) r.parameters[k] = v;
-    r.parameterSpecs = specs_;
+    // This planner's declarations, and the inner planner's for what only it declares (the
+    // portfolio's sampler's switches): each parameter keeps the one type it is declared with.
+    std::vector<ParamSpec> specs = specs_;
+    for (const ParamSpec& inner : r.parameterSpecs)
+      if (std::none_of(specs.begin(), specs.end(),
+                       [&](const ParamSpec& s) { return s.key() == inner.key(); }))
+        specs.push_back(inner);
+    r.parameterSpecs = std::move(specs);
     if (!r.found() || parameters_.at("optimize") == 0) return r;
     const CollisionChecker checker(scene_);
     OptimizeStats total;

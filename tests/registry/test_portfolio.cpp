@@ -50,8 +50,8 @@ TEST(Portfolio, TheWinnerIsNamedAndRunAloneGivesTheSamePath) {
             ? std::string(" --certified-motions --free-samples --lean-angles 0.5") +
                   (several ? " --range-share 0.1" : "")
             : "";
-    EXPECT_EQ(path["parameters"].value("certified_motions", 0.0), alsoAsked.empty() ? 0 : 1);
-    EXPECT_EQ(path["parameters"].value("free_samples", 0.0), alsoAsked.empty() ? 0 : 1);
+    EXPECT_EQ(path["parameters"].value("certified_motions", false), !alsoAsked.empty());
+    EXPECT_EQ(path["parameters"].value("free_samples", false), !alsoAsked.empty());
     EXPECT_EQ(path["parameters"].value("lean_angles", 0.0), alsoAsked.empty() ? 0 : 0.5);
     EXPECT_EQ(path["parameters"].value("range_share", 0.0),
               !alsoAsked.empty() && several ? 0.1 : 0);
@@ -59,7 +59,16 @@ TEST(Portfolio, TheWinnerIsNamedAndRunAloneGivesTheSamePath) {
                      winner + alsoAsked + " -o " + quote(alone))
                   .code,
               0);
-    EXPECT_EQ(path["waypoints"], readJson(alone)["waypoints"]) << scene << " won by " << winner;
+    const nlohmann::json own = readJson(alone);
+    EXPECT_EQ(path["waypoints"], own["waypoints"]) << scene << " won by " << winner;
+    // One type per parameter, whichever planner wrote it: a switch is true or false.
+    for (const auto& [key, value] : own["parameters"].items()) {
+      ASSERT_TRUE(path["parameters"].contains(key)) << key;
+      EXPECT_EQ(path["parameters"][key].type_name(), std::string(value.type_name())) << key;
+    }
+    if (winner == "rrtconnect") {
+      EXPECT_TRUE(path["parameters"]["simplify"].is_boolean());
+    }
     EXPECT_EQ(runMms("check " + file + " " + quote(raced)).code, 0);
   }
   // Random polygons fall to RRT-Connect in milliseconds, the Pacman at 0.9 to MMS: both
