@@ -539,6 +539,16 @@ constexpr const char* kScenarioSummary =
     "round-room (--seed, --robots: 3-5 discs that nearly fill a round room go round to each "
     "other's places)";
 
+// "pacman, viking-helmet, ... or round-room": the catalogue's names, so that the help lists
+// every family the catalogue has.
+std::string scenarioList() {
+  const std::vector<std::string>& names = mms::scenarioNames();
+  std::string list;
+  for (size_t i = 0; i < names.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return list;
+}
+
 Command addScenario(CLI::App& app) {
   auto run = [](ScenarioArgs& a, const CLI::Option* slackOption) {
     claimStandardOutput({{a.output, "-o"}});
@@ -548,13 +558,7 @@ Command addScenario(CLI::App& app) {
   return command<ScenarioArgs>(
       app, "scenario", kScenarioSummary,
       [](CLI::App* scenarioCmd, ScenarioArgs& sa) {
-        scenarioCmd
-            ->add_option("NAME", sa.name,
-                         "pacman, viking-helmet, random-polygons, assembly-1, assembly-2, random, "
-                         "carry-turn, niche-swap, niche-three, discs-swap, discs-room, "
-                         "open-clutter, bend, doors, keyhole, swallow, swallow-two, disc-grid, "
-                         "disc-triangles, "
-                         "disc-box, warehouse or round-room")
+        scenarioCmd->add_option("NAME", sa.name, scenarioList())
             ->required()
             ->check(CLI::IsMember(mms::scenarioNames()));
         outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");

@@ -466,6 +466,20 @@ Robot exactDiscRobot(size_t i, double radius, Vec2 start, Vec2 goal) {
   return r;
 }
 
+namespace {
+// n translating discs of radius r evenly round a circle of radius `ring` from a random phase,
+// each going `shift` places round, to where another starts.
+void addDiscsGoingRound(Scene& scene, Random& rng, size_t n, double r, double ring, size_t shift) {
+  const double phase = rng.uniform(0, 2 * M_PI);
+  auto place = [&](size_t i) {
+    const double a = phase + 2 * M_PI * double(i) / double(n);
+    return Vec2{ring * std::cos(a), ring * std::sin(a)};
+  };
+  for (size_t i = 0; i < n; ++i)
+    scene.robots.push_back(discRobot(i, r, place(i), place((i + shift) % n)));
+}
+}  // namespace
+
 Scene discsSwapScene(uint64_t seed) {
   Random rng(seed);
   const size_t n = 4 + rng.below(2);
@@ -488,13 +502,7 @@ Scene discsSwapScene(uint64_t seed) {
   scene.obstacles.push_back(poly);
   // Each disc goes `shift` places round the ring (to a place another disc starts at).
   const size_t shift = 1 + rng.below(n - 1);
-  const double phase = rng.uniform(0, 2 * M_PI);
-  auto place = [&](size_t i) {
-    const double a = phase + 2 * M_PI * double(i) / double(n);
-    return Vec2{ring * std::cos(a), ring * std::sin(a)};
-  };
-  for (size_t i = 0; i < n; ++i)
-    scene.robots.push_back(discRobot(i, r, place(i), place((i + shift) % n)));
+  addDiscsGoingRound(scene, rng, n, r, ring, shift);
   return scene;
 }
 
@@ -506,17 +514,17 @@ Scene roundRoomScene(uint64_t seed, size_t count) {
   const int blocks = 16 + int(rng.below(9));
   const double room = 5, wall = rng.uniform(0.6, 1.2), turn = rng.uniform(0, 2 * M_PI);
   // The discs' places: on a circle as far out as leaves each a little play (0.02-0.3 radii) to
-  // the wall, so neighbours sit 2.2-2.6 radii apart or more; a disc that must cross the middle
-  // may find the middle too narrow to pass the others (its free centre is 1.9-2.5 radii wide).
-  // More than five discs get smaller so that they fit on the circle 1.1 diameters apart.
-  const double fit = n > 2 ? 1.1 / std::sin(M_PI / double(n)) : 1.1;
+  // the wall, neighbours at least 1.1 diameters apart; a disc that must cross the middle may
+  // find it too narrow to pass the others (the free centre's radius is 1.9-2.5 radii). More
+  // than five discs get smaller so that they fit on the circle so far apart.
+  const double fit = 1.1 / std::sin(M_PI / double(std::max<size_t>(n, 2)));
   const double r = std::min(room / rng.uniform(2.9, 3.5), room / (1.05 + fit));
   const double ring = std::max(room - r * (1 + rng.uniform(0.02, 0.3)), fit * r);
   Scene scene;
   scene.name = "round-room-" + std::to_string(seed);
-  const double outer = (room + wall) / std::cos(M_PI / blocks) + 0.1;
-  scene.bounds = {-outer, -outer, outer, outer};
+  // The blocks' corners: on circles of the room's and the wall's circumradius.
   const double in = room / std::cos(M_PI / blocks), out = (room + wall) / std::cos(M_PI / blocks);
+  scene.bounds = {-out - 0.1, -out - 0.1, out + 0.1, out + 0.1};
   for (int b = 0; b < blocks; ++b) {
     const double a0 = turn + 2 * M_PI * b / blocks, a1 = turn + 2 * M_PI * (b + 1) / blocks;
     scene.obstacles.push_back({{in * std::cos(a0), in * std::sin(a0)},
@@ -527,13 +535,7 @@ Scene roundRoomScene(uint64_t seed, size_t count) {
   // Each disc goes `shift` places round (to where another starts); half round when n is even
   // with even odds, as in discopygal's four discs in a circular room.
   const size_t shift = (n % 2 == 0 && rng.uniform() < 0.5) ? n / 2 : 1 + rng.below(n - 1);
-  const double phase = rng.uniform(0, 2 * M_PI);
-  auto place = [&](size_t i) {
-    const double a = phase + 2 * M_PI * double(i) / double(n);
-    return Vec2{ring * std::cos(a), ring * std::sin(a)};
-  };
-  for (size_t i = 0; i < n; ++i)
-    scene.robots.push_back(discRobot(i, r, place(i), place((i + shift) % n)));
+  addDiscsGoingRound(scene, rng, n, r, ring, shift);
   return scene;
 }
 
