@@ -159,7 +159,7 @@ CLI::Option* numberIn(CLI::Option* o, double lo, double hi) {
 }
 
 CLI::Option* sceneArg(CLI::App* cmd, std::string& v, const std::string& help) {
-  return cmd->add_option("SCENE", v, help)->required();
+  return cmd->add_option("SCENE", v, help + " (-: standard input)")->required();
 }
 CLI::Option* outputOption(CLI::App* cmd, std::string& v, const std::string& help) {
   return cmd->add_option("-o,--output", v, help)->required();
@@ -171,7 +171,7 @@ CLI::Option* quietFlag(CLI::App* cmd, bool& v, const std::string& help) {
 CLI::Option* sceneAndPath(CLI::App* cmd, std::string& scene, std::string& path,
                           const std::string& sceneHelp, const std::string& pathHelp) {
   sceneArg(cmd, scene, sceneHelp);
-  return cmd->add_option("PATH", path, pathHelp);
+  return cmd->add_option("PATH", path, pathHelp + " (-: standard input)");
 }
 
 // The file a conversion writes, and silence on success.
@@ -444,6 +444,9 @@ Command addExport(CLI::App& app) {
         cmd->add_option("--to", a.to, "discopygal or ompl-path")
             ->required()
             ->check(CLI::IsMember({"discopygal", "ompl-path"}));
+        cmd->add_flag("--force", a.force,
+                      "--to discopygal: write robots that rotate as translating ones at their "
+                      "start angle (discopygal's polygon robots only translate)");
         convertedOutput(cmd, a.output, a.quiet, "File");
       });
 }
@@ -463,8 +466,11 @@ Command addLab(CLI::App& app) {
         labCmd->add_option("EXPERIMENT", la.experiment, "completeness or passages")
             ->required()
             ->check(CLI::IsMember({"completeness", "passages"}));
-        labCmd->add_option("-o,--output", la.output, "Folder for the report (created if missing)")
-            ->capture_default_str();
+        labCmd
+            ->add_option("-o,--output", la.output,
+                         "Folder for the report (created if missing; docs/theory in a checkout "
+                         "rewrites the docs' plots)")
+            ->required();
         seedOption(labCmd, la.seed, "Random seed (same seed, same report)");
         labCmd
             ->add_option("--trials", la.trials, "Trials per setting (0: the experiment's default)")

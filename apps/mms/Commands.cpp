@@ -130,7 +130,15 @@ int render(const RenderArgs& a) {
 int view(const ViewArgs& a) {
   const Scene scene = readScene(a.scene, true);
   Path path;
-  if (!a.path.empty()) path = loadPath(a.path, scene);
+  if (!a.path.empty()) {
+    path = loadPath(a.path, scene);
+    // The viewer plays the path as given; one that is not a collision-free motion from the
+    // scene's start to its goal is said to be so, as `mms check` would say.
+    const PathCheckResult c = checkPath(scene, CollisionChecker(scene), path.waypoints);
+    if (!c.ok)
+      std::fprintf(stderr, "%s: warning: not certified (%s); the viewer shows it as given\n",
+                   a.path.c_str(), c.reason.c_str());
+  }
   std::optional<RecordFile> record;
   if (!a.record.empty()) record = loadRecord(a.record, scene.robots.size());
   writeFileAtomically(a.output, renderHtmlViewer(scene, a.path.empty() ? nullptr : &path,
@@ -177,6 +185,13 @@ int exportScene(const ExportArgs& a) {
   if (a.to == "discopygal") {
     if (!a.path.empty())
       throw InputError(a.path + ": (PATH): --to discopygal writes the scene only");
+    // discopygal's polygon robots only translate: a robot that must turn would lose the
+    // motions its scene is about, unless the user says so.
+    for (size_t i = 0; i < scene.robots.size() && !a.force; ++i)
+      if (scene.robots[i].motion == Motion::Rigid && !(scene.robots[i].disc > 0))
+        throw InputError(a.scene + ": robots[" + std::to_string(i) + "] ('" + scene.robots[i].name +
+                         "'): rotates, and discopygal's polygon robots only translate (--force "
+                         "writes it translating at its start angle)");
     text = discopygalJson(scene, notes);
   } else {
     if (a.path.empty()) throw InputError(a.scene + ": (PATH): --to ompl-path needs a path file");

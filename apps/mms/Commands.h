@@ -102,7 +102,7 @@ namespace mms::cli {
 
 struct LabArgs {
   std::string experiment;  // completeness or passages
-  std::string output = "docs/theory";
+  std::string output;      // required: a report in the current folder would go unnoticed
   uint64_t seed = 1;
   size_t trials = 0;  // 0: the experiment's default
   unsigned threads = 0;
@@ -124,6 +124,7 @@ int importScene(const ImportArgs& a);
 struct ExportArgs {
   std::string scene, path, to, output;
   bool quiet = false;
+  bool force = false;  // a rotating robot written translating to discopygal
 };
 int exportScene(const ExportArgs& a);
 

@@ -73,6 +73,30 @@ void printStatistics(const PlanStatistics& s, bool found) {
                 s.manifoldsBuilt);
 }
 
+// After "no path found within the limit": what bounded the search (the phase the time went
+// to, and MMS's round) and what to try next.
+void printUnsolvedHint(const PlanArgs& a, const Scene& scene, const PlanStatistics& s) {
+  const std::pair<std::string, double>* most = nullptr;
+  for (const auto& phase : s.phases)
+    if (!afterFirstPath(phase.first) && (!most || phase.second > most->second)) most = &phase;
+  if (most && most->second > 0)
+    std::printf("  bounded by the time limit: most of it in %s (%.3g of %.3g s)%s\n",
+                spaced(most->first).c_str(), most->second, s.seconds,
+                s.rounds ? (", in round " + std::to_string(s.rounds)).c_str() : "");
+  const bool ours = a.planner == "auto" || a.planner == "mms";
+  if (ours)
+    std::printf(
+        "  to try: --time-limit %g (each round of MMS builds twice the manifolds of the "
+        "last, so about twice the time)%s\n",
+        2 * a.timeLimit,
+        scene.robots.size() >= 2 ? "; --planner kpiece samples all robots at once" : "");
+  else
+    std::printf(
+        "  to try: the default planner (MMS beside a sampler: narrow passages), or "
+        "--time-limit %g\n",
+        2 * a.timeLimit);
+}
+
 // "auto (mms)": the planner asked for, and the portfolio's member that found the path.
 std::string plannerName(const PlanArgs& a, const PlanResult& r) {
   return r.stats.solvedBy.empty() ? a.planner : a.planner + " (" + r.stats.solvedBy + ")";
@@ -109,6 +133,8 @@ int report(const PlanArgs& a, const Scene& scene, const std::string& label, cons
                   a.planner.c_str(),
                   r.status == PlanStatus::Cancelled ? "interrupted" : "time limit");
     printStatistics(r.stats, false);
+    if (r.stats.noPath.empty() && !early && r.status != PlanStatus::Cancelled)
+      printUnsolvedHint(a, scene, r.stats);
     return 1;
   }
   Path path;
@@ -141,6 +167,7 @@ int report(const PlanArgs& a, const Scene& scene, const std::string& label, cons
       label.c_str(), plannerName(a, r).c_str(), r.stats.seconds, path.waypoints.size(),
       c.translation, c.rotation, c.minClearance);
   printStatistics(r.stats, true);
+  if (output.empty()) std::printf("  no path file written: -o FILE writes one\n");
   return 0;
 }
 

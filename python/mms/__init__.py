@@ -181,13 +181,14 @@ class Result:
             return None
         return self.stats.get("solved_by") or self.planner
 
-    def robot_path(self, robot: int | str) -> list[tuple[float, float, float]]:
-        """One robot's poses (x, y, theta) along the path, by index or name."""
+    def robot_path(self, robot: int | str) -> list[list[float]]:
+        """One robot's poses [x, y, theta] along the path, by index or name (lists, as the
+        waypoints of `path` are)."""
         names = self.scene.robot_names
         i = names.index(robot) if isinstance(robot, str) and robot in names else robot
         if not isinstance(i, int) or isinstance(i, bool) or not 0 <= i < len(names):
             raise InputError(f"robot_path: {robot!r}: not one of the robots {names}")
-        return [tuple(w[3 * i:3 * i + 3]) for w in self.path]
+        return [list(w[3 * i:3 * i + 3]) for w in self.path]
 
     def save(self, file: str | _os.PathLike) -> None:
         """Writes the path as an mms-path/1 file (atomically) with the planner, seed, parameters
@@ -366,24 +367,30 @@ def bench(scenes, planners, output: str | _os.PathLike, *, runs: int = 12,
 
 def load_bench(output: str | _os.PathLike) -> list[dict]:
     """The rows of a `mms bench` folder's results.csv, one per run (scene, planner, seed),
-    with numbers as floats and empty fields (nothing measured) as None."""
+    with counts (seed, graph size) as ints, other numbers as
+    floats and empty fields (nothing measured) as None."""
     file = _os.path.join(_path_text(output, "mms.load_bench"), "results.csv")
     if not _os.path.isfile(file):
         raise InputError(f"{file}: no such file (not a `mms bench` folder?)")
     rows = []
     with open(file, newline="") as f:
         for row in _csv.DictReader(f):
-            rows.append({k: _cell(v) for k, v in row.items()})
+            rows.append({k: _cell(v, k in _COUNT_COLUMNS) for k, v in row.items()})
     return rows
 
 
-def _cell(v: str):
+# The columns of results.csv that count things: ints, whatever the CSV wrote.
+_COUNT_COLUMNS = {"seed", "graph_size"}
+
+
+def _cell(v: str, count: bool):
     if v == "":
         return None
     try:
-        return float(v)
+        number = float(v)
     except ValueError:
         return v
+    return int(number) if count and number.is_integer() else number
 
 
 def _path_text(file, who: str) -> str:

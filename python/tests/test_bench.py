@@ -15,6 +15,9 @@ def test_bench_two_planners(tmp_path):
     assert len(rows) == 8
     assert {r["planner"] for r in rows} == {"mms", "rrtconnect"}
     assert {r["seed"] for r in rows} == {1, 2}
+    # Counts are ints, not 1.0; times floats.
+    assert all(type(r["seed"]) is int for r in rows)
+    assert all(type(r["seconds"]) is float for r in rows)
     for r in rows:
         # RRT-Connect may miss the bar's slot in 10 s (under the sanitizers it does), or find
         # it just before the limit: the sanitizers' exit-time leak check then carries the

@@ -38,6 +38,9 @@ def test_one_robot_path_is_certified_and_saved(bar_slot, tmp_path):
     assert all(a == pytest.approx(b, abs=1e-9) for a, b in zip(again, r.path))
     assert mms.check(bar_slot, str(file))
     assert len(r.robot_path(0)) == len(r.path) == len(r.robot_path(bar_slot.robot_names[0]))
+    # One robot's poses are lists, as the waypoints are: the same values, the same type.
+    assert r.robot_path(0) == [w[0:3] for w in r.path]
+    assert all(type(p) is list for p in r.robot_path(0))
 
 
 def test_same_seed_same_path(bar_slot):

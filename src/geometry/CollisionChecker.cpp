@@ -9,6 +9,7 @@
 #include "geometry/BroadPhase.h"
 #include "geometry/PolygonOps.h"
 #include "geometry/Predicates.h"
+#include "util/Number.h"
 
 namespace mms {
 
@@ -32,7 +33,7 @@ ShrunkShape shrinkForContacts(const Ring& shape, double tolerance) {
   auto tooSmall = [&](const std::string& why) {
     return ShrunkShape{{},
                        "a feature is smaller than the contact tolerance " +
-                           std::to_string(tolerance) + " (" + why + ")"};
+                           formatNumber(tolerance) + " (" + why + ")"};
   };
   // Nearly parallel edges (e.g. a vertex off by 1e-320) put the shrunk vertex at infinity:
   // exact predicates must not see that.

@@ -3,16 +3,22 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
+#include <vector>
 
 #include "geometry/PolygonOps.h"
 #include "io/Json.h"
 #include "io/SceneIO.h"
+#include "util/Number.h"
 
 namespace mms {
 
 namespace {
 
 using json_in::Node;
+
+/// The name of the walls the export puts round the bounds, by which the import knows them.
+constexpr const char* kBoundsWall = "bounds";
 
 Ring polygon(const Node& n) {
   Ring r = n.ring(json_in::kMaxCoordinate, json_in::kMaxVertices);
@@ -50,6 +56,28 @@ Box openPlaneBounds(const Scene& scene) {
   return b.grown(margin);
 }
 
+/// Whether an obstacle is one of the walls mms's export puts round the bounds.
+bool namedBounds(const Node& o) {
+  if (!o.has("data") || !o["data"].json().is_object() || !o["data"].has("name")) return false;
+  const nlohmann::json& name = o["data"]["name"].json();
+  return name.is_string() && name.get<std::string>() == kBoundsWall;
+}
+
+/// The box four walls enclose, as discopygalJson() writes them (each the width of the box
+/// inside, touching the others at the corners), or nothing if they are not such walls.
+std::optional<Box> boundsOfWalls(const std::vector<Ring>& walls) {
+  if (walls.size() != 4) return std::nullopt;
+  std::vector<Box> boxes;
+  for (const Ring& w : walls) {
+    if (w.size() != 4) return std::nullopt;
+    boxes.push_back(boundingBox(w));
+  }
+  // Below, above, left, right of the box inside, in the order written.
+  const Box inside{boxes[2].xmax, boxes[0].ymax, boxes[3].xmin, boxes[1].ymin};
+  if (!(inside.xmin < inside.xmax && inside.ymin < inside.ymax)) return std::nullopt;
+  return inside;
+}
+
 }  // namespace
 
 bool isDiscopygal(const nlohmann::json& doc) {
@@ -74,12 +102,13 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
   Scene scene;
   scene.name = std::filesystem::path(file).stem().string();
   const Node obstacles = root["obstacles"];
+  std::vector<Ring> walls;  // the bounds of a scene mms exported, as four walls
   for (size_t i = 0; i < obstacles.arraySize(0, json_in::kMaxVertices); ++i) {
     const Node o = obstacles[i];
     o.requireObject();
     const std::string cls = o["__class__"].string();
     if (cls == "ObstaclePolygon") {
-      scene.obstacles.push_back(polygon(o["poly"]));
+      (namedBounds(o) ? walls : scene.obstacles).push_back(polygon(o["poly"]));
     } else if (cls == "ObstacleDisc") {
       scene.addObstacleDisc({o["location"].point(json_in::kMaxCoordinate), positive(o["radius"])});
     } else {
@@ -121,8 +150,8 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
         const double theta = p[size_t(1)].number(json_in::kMaxAngle);
         (std::string(key) == "start" ? robot.start : robot.goal) = {at.x, at.y, theta};
       }
-      notes.warnings.push_back(robot.name + ": rod of length " + std::to_string(len) +
-                               " as a rigid rectangle " + std::to_string(w) +
+      notes.warnings.push_back(robot.name + ": rod of length " + formatNumber(len) +
+                               " as a rigid rectangle " + formatNumber(w) +
                                " wide around it (conservative)");
     } else {
       r["__class__"].fail("unknown robot class '" + cls +
@@ -130,6 +159,11 @@ Scene importDiscopygal(const nlohmann::json& doc, const std::string& file, Impor
     }
     scene.robots.push_back(robot);
   }
+  if (const std::optional<Box> inside = boundsOfWalls(walls)) {
+    scene.bounds = *inside;  // as exported: the round trip keeps the bounds
+    return parseScene(sceneToJson(scene), file);
+  }
+  scene.obstacles.insert(scene.obstacles.end(), walls.begin(), walls.end());
   scene.bounds = openPlaneBounds(scene);
   notes.warnings.push_back(
       "bounds: none in discopygal; the box around obstacles and robots, grown on every side by "
@@ -162,7 +196,7 @@ std::string discopygalJson(const Scene& scene, ImportNotes& notes) {
         {{"__class__", "ObstaclePolygon"},
          {"poly",
           ringToJson({{w.xmin, w.ymin}, {w.xmax, w.ymin}, {w.xmax, w.ymax}, {w.xmin, w.ymax}})},
-         {"data", {{"name", "bounds"}}}});
+         {"data", {{"name", kBoundsWall}}}});
   notes.warnings.push_back("bounds written as four walls (discopygal scenes have none)");
   json robots = json::array();
   for (const Robot& r : scene.robots) {

@@ -1,8 +1,11 @@
 #include "io/Json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <optional>
 #include <sstream>
 #include <unordered_set>
 
@@ -157,7 +160,41 @@ class NoDuplicateKeys {
 
 }  // namespace
 
+namespace {
+
+/// Standard input, up to the size limit.
+std::string readStandardInput() {
+  std::string text;
+  char buf[1 << 16];
+  while (std::cin.read(buf, sizeof buf) || std::cin.gcount() > 0) {
+    text.append(buf, size_t(std::cin.gcount()));
+    if (text.size() > kMaxFileBytes)
+      throw InputError("-: (file): standard input is larger than " +
+                       std::to_string(kMaxFileBytes >> 20) + " MiB");
+  }
+  if (std::cin.bad()) throw InputError("-: (file): standard input: read failed");
+  return text;
+}
+
+/// The offset of a byte no text file holds (NUL, or a control character other than tab,
+/// newline, carriage return and form feed) among the first 4096, if any: such a file is a
+/// picture, an archive or a program, and the JSON parser's complaint about its first byte would
+/// not say so.
+std::optional<size_t> binaryByte(const std::string& text) {
+  const size_t n = std::min<size_t>(text.size(), 4096);
+  for (size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f') return i;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 Json parseText(const std::string& text, const std::string& source) {
+  if (const auto at = binaryByte(text))
+    throw InputError(source + ": (document): not a text file (byte " + std::to_string(*at) +
+                     " is binary data), so not JSON");
   try {
     if (nestsDeeperThan(text, kMaxDepth)) throw TooDeep{};
     Json out;
@@ -175,6 +212,7 @@ Json parseText(const std::string& text, const std::string& source) {
 }
 
 std::string readFile(const std::string& path) {
+  if (path == "-") return readStandardInput();
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path + ": (file): is a folder, not a file");

@@ -2,6 +2,7 @@
 
 #include "geometry/CollisionChecker.h"
 #include "io/Json.h"
+#include "util/Number.h"
 
 namespace mms {
 
@@ -37,7 +38,7 @@ std::vector<Query> parseQueries(const nlohmann::json& doc, const std::string& fi
         p.fail("robot '" + scene.robots[0].name + "' collides with " + c.describe(scene));
       if (scene.robots[0].motion == Motion::Translate &&
           ends[e]->theta != scene.robots[0].start.theta)
-        p.fail("a translate robot keeps its angle " + std::to_string(scene.robots[0].start.theta));
+        p.fail("a translate robot keeps its angle " + formatNumber(scene.robots[0].start.theta));
     }
     out.push_back(q);
   }

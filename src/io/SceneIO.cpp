@@ -8,6 +8,7 @@
 #include "geometry/Predicates.h"
 #include "io/Json.h"
 #include "util/AtomicFile.h"
+#include "util/Number.h"
 
 namespace mms {
 
@@ -43,7 +44,7 @@ namespace {
 /// must keep some room).
 double readRadius(const Node& node, double tolerance) {
   const double r = node.number(json_in::kMaxCoordinate);
-  if (!(r > 0)) node.fail("radius must be positive (got " + std::to_string(r) + ")");
+  if (!(r > 0)) node.fail("radius must be positive (got " + formatNumber(r) + ")");
   if (!(r > 2 * tolerance))
     node.fail("radius " + std::to_string(r) + " is not above twice the contact tolerance " +
               std::to_string(tolerance));

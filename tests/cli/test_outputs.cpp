@@ -35,7 +35,7 @@ std::vector<Writer> writers() {
       {"scenario", "scenario bend --seed 3 -o OUT", "{"},
       {"import", "import " + scene + " -q -o OUT", "{"},
       {"export ompl-path", "export " + scene + " " + path + " --to ompl-path -q -o OUT", "-"},
-      {"export discopygal", "export " + scene + " --to discopygal -q -o OUT", "{"},
+      {"export discopygal", "export " + scene + " --to discopygal --force -q -o OUT", "{"},
       {"assemble --svg", "assemble " + cup + " -q -o ASSEMBLY --svg OUT", "<?xml"},
   };
 }
@@ -92,6 +92,12 @@ TEST(Outputs, DashIsStandardOutputAndTheReportGoesToStandardError) {
   ASSERT_EQ(plan.code, 0) << plan.err;
   EXPECT_EQ(plan.out.rfind("{\"format\":\"mms-path/1\"", 0), 0u) << plan.out.substr(0, 80);
   EXPECT_NE(plan.err.find("mms found a path"), std::string::npos) << plan.err;
+  EXPECT_EQ(plan.err.find("no path file written"), std::string::npos) << plan.err;
+  // Without -o the path goes nowhere, and the report says so.
+  const test::Outcome nowhere = test::runMms("plan " + scene + " --planner mms");
+  ASSERT_EQ(nowhere.code, 0) << nowhere.err;
+  EXPECT_NE(nowhere.out.find("no path file written: -o FILE writes one"), std::string::npos)
+      << nowhere.out;
 }
 
 TEST(Outputs, APathNamingAPipeIsWrittenDirectly) {

@@ -279,9 +279,15 @@ TEST(Import, DiscopygalScenesConvertConservatively) {
   EXPECT_EQ(xmin, 0);
   EXPECT_EQ(xmax, 2);
 
-  // The command writes the same document as the library, and refuses a path.
+  // The command refuses the rod, which rotates, unless told to write it translating; then it
+  // writes the same document as the library. It refuses a path.
   const std::string viaCli = dir.path("cli.json");
-  auto ex = runMms("export " + quote(file) + " --to discopygal -q -o " + quote(viaCli));
+  auto refused = runMms("export " + quote(file) + " --to discopygal -q -o " + quote(viaCli));
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("robots[2] ('" + rod.name + "'): rotates"), std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(viaCli));
+  auto ex = runMms("export " + quote(file) + " --to discopygal --force -q -o " + quote(viaCli));
   ASSERT_EQ(ex.code, 0) << ex.err;
   ImportNotes cliNotes;
   EXPECT_EQ(test::readFile(viaCli), discopygalJson(s, cliNotes));
@@ -290,13 +296,20 @@ TEST(Import, DiscopygalScenesConvertConservatively) {
   EXPECT_EQ(withPath.code, 2);
   EXPECT_FALSE(std::filesystem::exists(dir.path("never.json")));
 
-  // Export and import again: the obstacles (and four walls for the bounds) and the robots'
-  // ends survive.
+  // Export and import again: the obstacles, the bounds (written as four walls, read back as
+  // the bounds, so that round trips do not grow them) and the robots' ends survive.
   ImportNotes exportNotes;
   const std::string back = dir.file("back.json", discopygalJson(s, exportNotes));
   ImportNotes again;
   const Scene t = importDiscopygal(back, again);
-  EXPECT_EQ(t.obstacles.size(), s.obstacles.size() + 4);
+  EXPECT_EQ(t.obstacles.size(), s.obstacles.size());
+  EXPECT_EQ(t.bounds.xmin, s.bounds.xmin);
+  EXPECT_EQ(t.bounds.ymin, s.bounds.ymin);
+  EXPECT_EQ(t.bounds.xmax, s.bounds.xmax);
+  EXPECT_EQ(t.bounds.ymax, s.bounds.ymax);
+  ImportNotes twice;
+  const Scene u = importDiscopygal(dir.file("twice.json", discopygalJson(t, twice)), twice);
+  EXPECT_EQ(u.bounds.xmax - u.bounds.xmin, s.bounds.xmax - s.bounds.xmin) << "no growth";
   ASSERT_EQ(t.robots.size(), 3u);
   for (size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(t.robots[i].start.x, s.robots[i].start.x);

@@ -199,8 +199,8 @@ INSTANTIATE_TEST_SUITE_P(
                 },
                 nullptr, "robots[0].disc", "radius must be positive"},
         BadCase{"disc_radius_negative",
-                [](json& j) { j["obstacles"].push_back({{"center", {2, 8}}, {"radius", -1}}); },
-                nullptr, "obstacles[1].radius", "radius must be positive"},
+                [](json& j) { j["obstacles"].push_back({{"center", {2, 8}}, {"radius", -0.5}}); },
+                nullptr, "obstacles[1].radius", "radius must be positive (got -0.5)"},
         BadCase{"disc_radius_not_a_number",
                 [](json& j) { j["obstacles"].push_back({{"center", {2, 8}}, {"radius", "big"}}); },
                 nullptr, "obstacles[1].radius", "expected a number"},
@@ -324,6 +324,33 @@ TEST(BadSceneText, UnreadableFiles) {
   r = runMms("validate " + quote(dir.path("")));  // a directory
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  // A picture or a program given as a scene: said to be binary, not a JSON syntax error at
+  // column 1.
+  const std::string png = dir.file("scene.png", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+  r = runMms("validate " + quote(png));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("scene.png: (document): not a text file (byte 6 is binary data)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+}
+
+// `-` reads the scene or the path from standard input, as `-o -` writes standard output.
+TEST(SceneLoad, DashReadsStandardInput) {
+  TempDir dir;
+  const std::string scene = quote(scenario("one-robot/bar-slot.json")),
+                    path = quote(dir.path("p.json"));
+  ASSERT_EQ(runMms("plan " + scene + " -q --planner mms -o " + path).code, 0);
+  // Bracketed: the redirections runCommand adds are the pipeline's, not mms's alone.
+  const std::string mms = quote(MMS_BINARY);
+  Outcome r = runCommand("(cat " + path + " | " + mms + " check " + scene + " -)");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("certified collision-free"), std::string::npos) << r.out;
+  r = runCommand("(cat " + scene + " | " + mms + " check - " + path + ")");
+  EXPECT_EQ(r.code, 0) << r.err;
+  r = runCommand("(echo '{' | " + mms + " validate -)");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err.rfind("-: (document): not valid JSON", 0), 0u) << r.err;
 }
 
 TEST(SceneLoad, NormalisesOrientationAndAcceptsTouchingStart) {

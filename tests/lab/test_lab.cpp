@@ -248,6 +248,10 @@ TEST(Lab, CommandWritesEveryPlotAndRejectsBadInput) {
 
   auto bad = test::runMms("lab nonsense");
   EXPECT_EQ(bad.code, 2);
+  // Without -o the report would land in the current folder unnoticed: -o is required.
+  auto nowhere = test::runMms("lab completeness --quick -q");
+  EXPECT_EQ(nowhere.code, 2);
+  EXPECT_NE(nowhere.err.find("--output"), std::string::npos) << nowhere.err;
   auto file = dir.file("plain", "x");
   auto notDir = test::runMms("lab completeness --quick -o " + test::quote(file + "/sub"));
   EXPECT_EQ(notDir.code, 2);

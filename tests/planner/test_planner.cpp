@@ -227,6 +227,9 @@ TEST(Plan, UnreachableGoalEndsWithExitOneWithinTheTimeLimit) {
   EXPECT_EQ(r.code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("no path found within 2 s"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("slices"), std::string::npos);  // says what was built
+  // ... what bounded the search, and what to try.
+  EXPECT_NE(r.out.find("bounded by the time limit: most of it in "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("to try: --time-limit 4 "), std::string::npos) << r.out;
   EXPECT_FALSE(std::filesystem::exists(dir.path("p.json")));
   EXPECT_LT(seconds, 2.0 + 3.0);  // the limit plus process start and a slow shared machine
 }

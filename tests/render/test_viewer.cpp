@@ -72,6 +72,27 @@ TEST(View, SavedRoadmapReachesThePathFileAndThePage) {
   EXPECT_FALSE(std::filesystem::exists(dir.path("two.json")));
 }
 
+// The viewer shows a path as given, and says when it is not a certified motion of the scene
+// (here: it begins away from the robot's start).
+TEST(View, AnUncertifiedPathIsShownWithAWarning) {
+  TempDir dir;
+  const std::string scene = test::scenario("one-robot/bar-slot.json");
+  const std::string path = dir.path("p.json"), moved = dir.path("moved.json"),
+                    html = dir.path("v.html");
+  ASSERT_EQ(runMms("plan " + quote(scene) + " --planner mms -q -o " + quote(path)).code, 0);
+  auto good = runMms("view " + quote(scene) + " " + quote(path) + " -o " + quote(html));
+  ASSERT_EQ(good.code, 0) << good.err;
+  EXPECT_EQ(good.err.find("warning"), std::string::npos) << good.err;
+  nlohmann::json j = nlohmann::json::parse(test::readFile(path));
+  j["waypoints"][0][0] = j["waypoints"][0][0].get<double>() + 0.5;
+  dir.file("moved.json", j.dump());
+  auto bad = runMms("view " + quote(scene) + " " + quote(moved) + " -o " + quote(html));
+  EXPECT_EQ(bad.code, 0) << bad.err;
+  EXPECT_NE(bad.err.find("moved.json: warning: not certified ("), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("not at its start"), std::string::npos) << bad.err;
+  EXPECT_EQ(test::readFile(html).rfind("<!DOCTYPE html>", 0), 0u);
+}
+
 // The viewer page of the scene and path, written by `mms view` into `dir`.
 std::string viewPage(const Scene& s, const Path& p, TempDir& dir) {
   const std::string sceneFile = dir.path("s.json"), pathFile = dir.path("p.json");
