@@ -4,18 +4,23 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstddef>
 
 namespace mms {
 
 class Termination {
  public:
   using Clock = std::chrono::steady_clock;
-  /// Told of every check of a condition that carries it: work that should begin only if the
-  /// computation checking runs long (the portfolio's MMS) begins from there.
+  /// Told of every check of a condition that carries it, and of every round an MMS planner
+  /// begins under it: work that should begin only if the computation checking runs long (the
+  /// portfolio's MMS) begins from there, and the portfolio's sampler runs for as many
+  /// iterations as MMS's rounds have earned it.
   struct Watcher {
     /// `now`: the time the check read (one clock read per check, which a sampler makes per
     /// iteration).
-    virtual void onCheck(Clock::time_point now) = 0;
+    virtual void onCheck(Clock::time_point now) { (void)now; }
+    /// `round`: the round begun, counted as the planner counts them (1 for its first).
+    virtual void onRound(size_t round) { (void)round; }
 
    protected:
     ~Watcher() = default;
@@ -49,11 +54,19 @@ class Termination {
     t.watcher_ = watcher;
     return t;
   }
+  /// A watcher may end the condition from onCheck (by setting `ended`): this check then holds.
   bool operator()() const {
     if (cancelled() || endedEarly()) return true;
     const Clock::time_point now = Clock::now();
-    if (watcher_) watcher_->onCheck(now);
+    if (watcher_) {
+      watcher_->onCheck(now);
+      if (cancelled() || endedEarly()) return true;
+    }
     return now >= deadline_;
+  }
+  /// An MMS planner begins round `round` (1, 2, ...) under this condition.
+  void noteRound(size_t round) const {
+    if (watcher_) watcher_->onRound(round);
   }
   /// Seconds until the deadline (0 once passed, cancelled or ended), for budgets of sub-tasks.
   double secondsLeft() const {

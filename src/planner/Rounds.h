@@ -41,6 +41,7 @@ RoundsOutcome runRounds(const RoundHooks& h, Roadmap& roadmap, size_t from, size
   // After a candidate the checker refused, the round is completed before the next search.
   bool searchEarly = true;
   roadmap.beginRound(uint32_t(++stats.rounds));
+  stop.noteRound(stats.rounds);
   while (true) {
     try {
       h.begin();
@@ -81,6 +82,7 @@ RoundsOutcome runRounds(const RoundHooks& h, Roadmap& roadmap, size_t from, size
     if (!h.next()) return out;
     searchEarly = true;
     roadmap.beginRound(uint32_t(++stats.rounds));
+    stop.noteRound(stats.rounds);
   }
 }
 

@@ -3,18 +3,24 @@
 // states and MMS would still be building its first slices; where they are narrow MMS wins by
 // orders of magnitude.
 //
-// Determinism: the sampler's path is taken when it finds one within a budget of iterations, and
-// MMS's otherwise. Each member is deterministic for its seed and the budget is counted, not
-// timed, so which member's path is returned does not depend on the machine's load; the clock
-// only decides how soon (docs/planner.md, "The default: a portfolio"). The portfolio returns a
-// member's path unchanged, naming it (PlanStatistics::solvedBy).
+// Determinism: the sampler's path is taken when it finds one within its allowance of iterations,
+// and MMS's otherwise. The allowance is a budget that doubles with each round MMS begins (MMS
+// doubles its manifolds each round): the sampler runs while MMS works, so that scenes where MMS
+// struggles (many robots nearly filling a room) still get the sampler's path, however many
+// iterations it needs. Each member is deterministic for its seed and the allowance is counted in
+// iterations and rounds, not timed, so which member's path is returned does not depend on the
+// machine's load; the clock only decides how soon (docs/planner.md, "The default: a
+// portfolio"). The portfolio returns a member's path unchanged, naming it
+// (PlanStatistics::solvedBy).
 #include <execinfo.h>
 #include <malloc.h>
 #include <pthread.h>
 #include <sched.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <exception>
 #include <functional>
@@ -45,8 +51,11 @@ std::map<std::string, double> samplerSettings(const Scene& scene) {
 /// How long the sampler runs alone before MMS starts: on open scenes it is then often done,
 /// and no second thread is paid for (docs/planner.md, "The default: a portfolio").
 constexpr std::chrono::milliseconds kHeadStart{2};
-/// The sampler's iterations by default: its path is taken when it finds one within them.
+/// The sampler's iterations by default while MMS is in its first round, doubled at each round
+/// MMS begins: its path is taken when it finds one within them.
 constexpr double kSamplerIterations = 2000;
+/// How often a sampler waiting for MMS's next round looks at the caller's limits.
+constexpr std::chrono::milliseconds kWaitStep{5};
 
 /// MMS's large blocks kept in the heap, so that mapping them does not hold the memory-map lock
 /// the sampler's page faults need (the command line's jemalloc ignores this); and what a second
@@ -107,11 +116,14 @@ class CoresApart {
   bool pinned_ = false;
 };
 
-/// MMS's side of the portfolio, and the sampler's budget. MMS begins only once the sampler has run
-/// for the head start: the sampler tells it of each check of its termination condition (one per
-/// iteration), and the first check past the head start makes MMS and starts it on a thread of
-/// its own. The same checks, counted, end the sampler once its budget is spent; MMS finishing
-/// does not, so that the sampler's path within its budget wins whoever was faster. On open scenes
+/// MMS's side of the portfolio, and the sampler's allowance. MMS begins only once the sampler has
+/// run for the head start: the sampler tells it of each check of its termination condition (one
+/// per iteration), and the first check past the head start makes MMS and starts it on a thread
+/// of its own. The same checks, counted, hold the sampler once they pass its allowance (the
+/// budget, doubled for each round MMS has begun after its first) until MMS begins another round,
+/// and end it if MMS finishes with a path first. MMS finishing does not end the sampler within
+/// its allowance, so that the sampler's path within it wins whoever was faster; MMS giving up
+/// (or failing) leaves the sampler unbounded. On open scenes
 /// the sampler is done before that, and there is neither MMS nor a second thread: MMS's
 /// construction (exact obstacles, arrangements) beside a 2 ms sampler slowed it by 5-8 % on the
 /// bends (seeds 1-10, median per scene), and a process with a second thread pays for atomic
@@ -126,15 +138,16 @@ class Challenger final : public Termination::Watcher {
  public:
   using Maker = std::function<std::unique_ptr<Planner>()>;
   /// `mms`: the MMS planner of earlier queries, or null (`make` makes it when it starts); both
-  /// must outlive this. `iterations`: the sampler's budget.
+  /// must outlive this. `iterations`: the sampler's budget in MMS's first round.
   Challenger(std::unique_ptr<Planner>& mms, const Maker& make, const Termination& stop,
              const Planner::Progress& progress, size_t iterations)
       : mms_(mms),
         make_(make),
         progress_(&progress),
         budget_(iterations),
+        allowed_(double(iterations)),
         sampler_(stop.endingAlsoOn(&spent_)),
-        here_(stop.endingAlsoOn(&ended_)),
+        here_(stop.endingAlsoOn(&ended_).watchedBy(&rounds_)),
         apart_(here_.cancelledBy(&cancelled_)),
         headStartEnds_(Termination::Clock::now() + kHeadStart) {}
   ~Challenger() {
@@ -145,12 +158,18 @@ class Challenger final : public Termination::Watcher {
   Challenger(const Challenger&) = delete;
   Challenger& operator=(const Challenger&) = delete;
 
-  /// The sampler's condition: the caller's, ending also once its budget is spent.
+  /// The sampler's condition: the caller's, ending also once MMS has a path and the sampler's
+  /// allowance is spent.
   const Termination& sampler() const { return sampler_; }
   const Stopwatch& clock() const { return clock_; }
   void onCheck(Termination::Clock::time_point now) override {
-    if (++checks_ >= budget_) spent_ = true;  // this check's iteration is the budget's last
-    if (started_.load(std::memory_order_relaxed) || now < headStartEnds_) return;
+    const bool over = !unbounded_ && double(++checks_) > allowed_;
+    // MMS starts at once when the sampler's allowance runs out within the head start.
+    if (!started_.load(std::memory_order_relaxed) && (over || now >= headStartEnds_)) startMms();
+    if (over) awaitAllowance();
+  }
+  /// MMS on its own thread, on the cores the sampler's thread does not use.
+  void startMms() {
     if (started_.exchange(true)) return;
     const bool apart = cores_.plan();
     bool created = apart && start(&cores_.others());
@@ -198,6 +217,52 @@ class Challenger final : public Termination::Watcher {
   PlanResult& result() { return own_; }
 
  private:
+  /// Tells the challenger of the rounds MMS begins, on MMS's thread.
+  struct Rounds final : Termination::Watcher {
+    explicit Rounds(Challenger& c) : challenger(c) {}
+    void onRound(size_t round) override { challenger.roundBegun(round); }
+    Challenger& challenger;
+  };
+  /// `round` as the MMS planner counts them: after earlier queries, its first in this one may
+  /// be past 1.
+  void roundBegun(size_t round) {
+    {
+      const std::lock_guard lock(doneMutex_);
+      if (firstRound_ == 0) firstRound_ = round;
+      lastRound_ = std::max(lastRound_, round);
+    }
+    doneChanged_.notify_all();
+  }
+  /// The sampler's iterations now allowed: the budget, doubled for each round MMS has begun
+  /// after its first.
+  double allowanceLocked() const {
+    const size_t doublings = firstRound_ == 0 ? 0 : lastRound_ - firstRound_;
+    return std::ldexp(double(budget_), int(std::min<size_t>(doublings, 1000)));
+  }
+  /// The sampler past its allowance: waits for MMS's next round. MMS done with a path ends the
+  /// sampler; MMS done without one (it gave up, or failed) lets it run on unbounded, as does an
+  /// MMS that could not start.
+  void awaitAllowance() {
+    if (!threadStarted_) {
+      unbounded_ = true;
+      return;
+    }
+    std::unique_lock lock(doneMutex_);
+    while (double(checks_) > (allowed_ = allowanceLocked())) {
+      if (done_) {
+        if (own_.found())
+          spent_ = true;
+        else
+          unbounded_ = true;
+        return;
+      }
+      if (sampler_.secondsLeft() == 0) {  // the caller's limit or Ctrl-C: the sampler ends
+        spent_ = true;
+        return;
+      }
+      doneChanged_.wait_for(lock, kWaitStep);
+    }
+  }
   /// MMS's thread, on `cores` if given; whether it started.
   bool start(const cpu_set_t* cores) {
     pthread_attr_t attr;
@@ -247,7 +312,12 @@ class Challenger final : public Termination::Watcher {
   std::atomic<bool> cancelled_{false};  // the caller's flag, passed on while it waits
   std::atomic<bool> started_{false};
   const size_t budget_;
-  size_t checks_ = 0;  // the sampler's, on its thread
+  // The sampler's, on its thread: its checks, its allowance when last read, and whether MMS
+  // gave up, so that it runs on.
+  size_t checks_ = 0;
+  double allowed_;
+  bool unbounded_ = false;
+  Rounds rounds_{*this};  // MMS's conditions tell it of the rounds begun
   const Termination sampler_;
   const Termination here_;   // MMS's when it runs on the caller's thread
   const Termination apart_;  // MMS's on its own thread
@@ -257,6 +327,7 @@ class Challenger final : public Termination::Watcher {
   std::mutex doneMutex_;
   std::condition_variable doneChanged_;
   bool done_ = false;
+  size_t firstRound_ = 0, lastRound_ = 0;  // of MMS in this query; 0: none begun
   CoresApart cores_;
   PlanResult own_;
   std::exception_ptr failure_;
@@ -271,8 +342,9 @@ const ParamSpec& samplerIterations() {
       1e9,
       kSamplerIterations,
       std::string("Iterations of ") + kSampler +
-          " beside MMS: its path is taken when it finds one within them, MMS's otherwise, so "
-          "the same seed gives the same path whatever the load; 0: MMS alone (default " +
+          " beside MMS while MMS is in its first round, doubled at each round MMS begins: its "
+          "path is taken when it finds one within them, MMS's otherwise, so the same seed gives "
+          "the same path whatever the load; 0: MMS alone (default " +
           formatNumber(kSamplerIterations) + ")"};
   return spec;
 }
@@ -300,7 +372,7 @@ class Portfolio : public Planner {
     PlanResult sampled = sampler->solve(challenger->sampler().watchedBy(challenger.get()));
     challenger->restoreCores();
     if (sampled.found()) {
-      // Found within its budget: its path, whether MMS has one or not. MMS stops in the
+      // Found within its allowance: its path, whether MMS has one or not. MMS stops in the
       // background (finishBackgroundWork).
       challenger->end();
       challenger->mute();
@@ -308,8 +380,8 @@ class Portfolio : public Planner {
       running_ = std::move(challenger);
       return named(std::move(sampled), kSampler);
     }
-    // Without a path (none within its budget or its time, or one the certifier refused) the
-    // sampler leaves the rest of the time to MMS.
+    // Without a path (MMS had one first, the time ran out, or the certifier refused the
+    // sampler's) the sampler leaves the rest of the time to MMS.
     challenger->runHere();
     challenger->await(stop);
     challenger->join();
@@ -365,8 +437,8 @@ PlannerInfo portfolioPlannerInfo() {
   info.name = "auto";
   info.summary = std::string("MMS and OMPL's ") + kSampler +
                  " (certified motions, free samples) on two cores; the sampler's certified path "
-                 "if it finds one within its iterations (--sampler-iterations), else MMS's (the "
-                 "statistics name it). "
+                 "if it finds one within its iterations (--sampler-iterations, doubled at each "
+                 "round MMS begins), else MMS's (the statistics name it). "
                  "Scenes MMS does not take go to the sampler alone; with a roadmap picture asked "
                  "for (one robot), MMS runs alone";
   info.params = mms.params;

@@ -131,9 +131,10 @@ nlohmann::json statisticsOf(const std::string& pathFile) {
 }  // namespace
 
 // The default planner takes its sampler's path when the sampler, run alone with the same seed,
-// finds one within the budget of iterations, and MMS's otherwise: on the budget's edge, and on
-// close races (the first path found had won them, and a keyhole or discs' swap went either way).
-// The rule counts iterations, so neither the member nor the file changes when the machine is
+// finds one within its allowance (the budget of iterations, doubled for each round MMS alone
+// begins after its first), and MMS's otherwise: on the allowance's edge, and on close races
+// (the first path found had won them, and a keyhole or discs' swap went either way). The rule
+// counts iterations and rounds, so neither the member nor the file changes when the machine is
 // loaded: planned idle, then squeezed onto one core beside two spinning threads.
 TEST(Plan, DefaultPlannerSamePathFileUnderLoad) {
   TempDir dir;
@@ -147,7 +148,8 @@ TEST(Plan, DefaultPlannerSamePathFileUnderLoad) {
   const std::vector<std::pair<std::string, std::string>> scenes{
       {"keyhole", "1"}, {"discs-swap", "2"}, {"bend", "7"}, {"bend", "2"}};
   std::vector<std::string> files, idle;
-  std::vector<size_t> alone;  // the sampler's iterations to its path, alone
+  std::vector<size_t> alone;   // the sampler's iterations to its path, alone
+  std::vector<size_t> rounds;  // the rounds MMS alone begins
   for (const auto& [family, seed] : scenes) {
     files.push_back(dir.path(family + "-" + seed + ".json"));
     ASSERT_EQ(runMms("scenario " + family + " --seed " + seed + " -o " + quote(files.back())).code,
@@ -159,12 +161,20 @@ TEST(Plan, DefaultPlannerSamePathFileUnderLoad) {
              "--planner rrtconnect --certified-motions --free-samples --lean-angles 0.5" + shorter,
              "sampler.json"));
     alone.push_back(sampler["counts"]["iterations"].get<size_t>());
+    rounds.push_back(
+        statisticsOf(plan(files.back(), "--planner mms", "mms.json"))["rounds"].get<size_t>());
+    ASSERT_GE(rounds.back(), 1u);
+    const size_t allowance = size_t(2000) << (rounds.back() - 1);
     idle.push_back(plan(files.back(), "", family + seed + "-idle.json"));
-    EXPECT_EQ(statisticsOf(idle.back())["solved_by"], alone.back() <= 2000 ? "rrtconnect" : "mms")
-        << files.back() << ": the sampler alone took " << alone.back() << " iterations";
+    EXPECT_EQ(statisticsOf(idle.back())["solved_by"],
+              alone.back() <= allowance ? "rrtconnect" : "mms")
+        << files.back() << ": the sampler alone took " << alone.back() << " iterations, MMS "
+        << rounds.back() << " rounds";
   }
-  // The budget's edge, exactly.
-  const size_t edge = alone.back();
+  // The allowance's edge, exactly: the least budget that doubled for MMS's rounds covers the
+  // sampler's iterations.
+  const size_t doubled = size_t(1) << (rounds.back() - 1);
+  const size_t edge = (alone.back() + doubled - 1) / doubled;
   EXPECT_EQ(statisticsOf(plan(files.back(), "--sampler-iterations " + std::to_string(edge),
                               "edge.json"))["solved_by"],
             "rrtconnect");

@@ -153,6 +153,27 @@ TEST(Portfolio, TheSamplersPathsAreCertifiedAsTheyGrow) {
   }
 }
 
+// Discs nearly filling a round room: MMS begins seven rounds before its path, while the sampler
+// needs some 45 000 iterations, far past the budget of 2000 but within it doubled for each of
+// MMS's rounds after its first. The sampler's path is taken, and the same one each time.
+TEST(Portfolio, TheSamplersAllowanceDoublesWithMmsRounds) {
+  const Scene scene = roundRoomScene(3);
+  PlannerParams seeded;
+  seeded.seed = 3;
+  std::vector<std::vector<Config>> paths;
+  for (int run = 0; run < 2; ++run) {
+    const PlanResult r = makePlanner("auto", scene, seeded)->solve(Termination(60));
+    ASSERT_EQ(r.status, PlanStatus::Found) << "run " << run;
+    EXPECT_EQ(r.stats.solvedBy, "rrtconnect");
+    size_t iterations = 0;
+    for (const auto& [name, value] : r.stats.counts)
+      if (name == "iterations") iterations = size_t(value);
+    EXPECT_GT(iterations, 2000u);
+    paths.push_back(r.waypoints);
+  }
+  EXPECT_EQ(paths[0], paths[1]);
+}
+
 // A picture of the roadmap is of MMS's cells and lines. On a bend the sampler usually wins the
 // race, and its path has neither: with the picture asked for, MMS runs alone, and says so.
 TEST(Portfolio, ARoadmapPictureIsMmsAlone) {
