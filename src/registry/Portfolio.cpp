@@ -122,8 +122,8 @@ class CoresApart {
 /// of its own. The same checks, counted, hold the sampler once they pass its allowance (the
 /// budget, doubled for each round MMS has begun after its first) until MMS begins another round,
 /// and end it if MMS finishes with a path first. MMS finishing does not end the sampler within
-/// its allowance, so that the sampler's path within it wins whoever was faster; MMS giving up
-/// (or failing) leaves the sampler unbounded. On open scenes
+/// its allowance, so that the sampler's path within it wins whoever was faster; MMS failing
+/// (throwing) leaves the sampler unbounded. On open scenes
 /// the sampler is done before that, and there is neither MMS nor a second thread: MMS's
 /// construction (exact obstacles, arrangements) beside a 2 ms sampler slowed it by 5-8 % on the
 /// bends (seeds 1-10, median per scene), and a process with a second thread pays for atomic
@@ -239,9 +239,9 @@ class Challenger final : public Termination::Watcher {
     const size_t doublings = firstRound_ == 0 ? 0 : lastRound_ - firstRound_;
     return std::ldexp(double(budget_), int(std::min<size_t>(doublings, 1000)));
   }
-  /// The sampler past its allowance: waits for MMS's next round. MMS done with a path ends the
-  /// sampler; MMS done without one (it gave up, or failed) lets it run on unbounded, as does an
-  /// MMS that could not start.
+  /// The sampler past its allowance: waits for MMS's next round. MMS done ends the sampler (its
+  /// path, or its proof that none exists, is the answer); MMS failing lets it run on unbounded,
+  /// as does an MMS that could not start.
   void awaitAllowance() {
     if (!threadStarted_) {
       unbounded_ = true;
@@ -250,10 +250,11 @@ class Challenger final : public Termination::Watcher {
     std::unique_lock lock(doneMutex_);
     while (double(checks_) > (allowed_ = allowanceLocked())) {
       if (done_) {
-        if (own_.found())
-          spent_ = true;
-        else
+        // MMS's answer stands (a path, or a proof that none exists), unless it failed.
+        if (failure_)
           unbounded_ = true;
+        else
+          spent_ = true;
         return;
       }
       if (sampler_.secondsLeft() == 0) {  // the caller's limit or Ctrl-C: the sampler ends
@@ -313,7 +314,7 @@ class Challenger final : public Termination::Watcher {
   std::atomic<bool> started_{false};
   const size_t budget_;
   // The sampler's, on its thread: its checks, its allowance when last read, and whether MMS
-  // gave up, so that it runs on.
+  // failed, so that it runs on.
   size_t checks_ = 0;
   double allowed_;
   bool unbounded_ = false;
