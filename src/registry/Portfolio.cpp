@@ -121,13 +121,13 @@ class CoresApart {
 /// per iteration), and the first check past the head start makes MMS and starts it on a thread
 /// of its own. The same checks, counted, hold the sampler once they pass its allowance (the
 /// budget, doubled for each round MMS has begun after its first) until MMS begins another round,
-/// and end it if MMS finishes with a path first. MMS finishing does not end the sampler within
-/// its allowance, so that the sampler's path within it wins whoever was faster; MMS failing
-/// (throwing) leaves the sampler unbounded. On open scenes
-/// the sampler is done before that, and there is neither MMS nor a second thread: MMS's
-/// construction (exact obstacles, arrangements) beside a 2 ms sampler slowed it by 5-8 % on the
-/// bends (seeds 1-10, median per scene), and a process with a second thread pays for atomic
-/// reference counts and locked allocation in every shared pointer and malloc of the sampler.
+/// and end it if MMS finishes first (with its path, or a proof that none exists). MMS finishing
+/// does not end the sampler within its allowance, so that the sampler's path within it wins whoever
+/// was faster; MMS failing (throwing) leaves the sampler unbounded. On open scenes the sampler is
+/// done before that, and there is neither MMS nor a second thread: MMS's construction (exact
+/// obstacles, arrangements) beside a 2 ms sampler slowed it by 5-8 % on the bends (seeds 1-10,
+/// median per scene), and a process with a second thread pays for atomic reference counts and
+/// locked allocation in every shared pointer and malloc of the sampler.
 ///
 /// When the sampler has its path, MMS's thread is left to stop on its own: it checks its end
 /// between exact steps, and the step it is in took 0.1-2 ms (mean 0.5 ms over 36 open-clutter
@@ -158,7 +158,7 @@ class Challenger final : public Termination::Watcher {
   Challenger(const Challenger&) = delete;
   Challenger& operator=(const Challenger&) = delete;
 
-  /// The sampler's condition: the caller's, ending also once MMS has a path and the sampler's
+  /// The sampler's condition: the caller's, ending also once MMS is done and the sampler's
   /// allowance is spent.
   const Termination& sampler() const { return sampler_; }
   const Stopwatch& clock() const { return clock_; }
@@ -167,21 +167,6 @@ class Challenger final : public Termination::Watcher {
     // MMS starts at once when the sampler's allowance runs out within the head start.
     if (!started_.load(std::memory_order_relaxed) && (over || now >= headStartEnds_)) startMms();
     if (over) awaitAllowance();
-  }
-  /// MMS on its own thread, on the cores the sampler's thread does not use.
-  void startMms() {
-    if (started_.exchange(true)) return;
-    const bool apart = cores_.plan();
-    bool created = apart && start(&cores_.others());
-    // Cores that cannot be set (a cpuset changed under the process) leave them to the scheduler.
-    if (created)
-      cores_.keepHere();
-    else
-      created = start(nullptr);
-    if (!created) {  // no room for a thread's stack: the memory limit
-      failure_ = std::make_exception_ptr(std::bad_alloc());
-      ended_ = true;
-    }
   }
   /// MMS on the calling thread, for the time left, if it has not started: the sampler gave up
   /// before the head start was over.
@@ -217,6 +202,21 @@ class Challenger final : public Termination::Watcher {
   PlanResult& result() { return own_; }
 
  private:
+  /// MMS on its own thread, on the cores the sampler's thread does not use.
+  void startMms() {
+    if (started_.exchange(true)) return;
+    const bool apart = cores_.plan();
+    bool created = apart && start(&cores_.others());
+    // Cores that cannot be set (a cpuset changed under the process) leave them to the scheduler.
+    if (created)
+      cores_.keepHere();
+    else
+      created = start(nullptr);
+    if (!created) {  // no room for a thread's stack: the memory limit
+      failure_ = std::make_exception_ptr(std::bad_alloc());
+      ended_ = true;
+    }
+  }
   /// Tells the challenger of the rounds MMS begins, on MMS's thread.
   struct Rounds final : Termination::Watcher {
     explicit Rounds(Challenger& c) : challenger(c) {}
