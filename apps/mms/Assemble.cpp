@@ -92,12 +92,12 @@ int assemble(const AssembleArgs& a) {
 
   for (size_t k = 0; k < r.steps.size(); ++k)
     std::printf("%s\n", describe(scene, k, r.steps[k]).c_str());
-  std::printf("%s: %zu steps, %zu planner runs, %.3f s; files in %s\n", a.scene.c_str(),
-              r.steps.size(), r.attempts, r.seconds, a.output.c_str());
+  std::printf("%s: %zu step%s, %zu planner run%s, %.3f s; files in %s\n", a.scene.c_str(),
+              r.steps.size(), r.steps.size() == 1 ? "" : "s", r.attempts,
+              r.attempts == 1 ? "" : "s", r.seconds, a.output.c_str());
   if (!r.complete()) {
-    std::printf("%s: stuck: %s (no step found within %g s%s)\n", a.scene.c_str(),
-                partList(scene, r.stuck).c_str(), a.timeLimit,
-                a.noPairs ? ", one part at a time" : "");
+    std::printf("%s: stuck: %s (%s)\n", a.scene.c_str(), partList(scene, r.stuck).c_str(),
+                r.stuckBecause.c_str());
     return 1;
   }
   std::printf("%s: every part removed; the whole motion is certified (%s)\n", a.scene.c_str(),

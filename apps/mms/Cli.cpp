@@ -494,7 +494,9 @@ Command addAssemble(CLI::App& app) {
   return command<AssembleArgs>(
       app, "assemble",
       "Three-handed disassembly: remove every part (robot) from the static part (the obstacles),\n"
-      "one part or two at a time while the others stay put. Parts whose goal equals their start\n"
+      "one part or two at a time while the others stay put (a translating part alone exactly, a\n"
+      "rigid part alone and pairs by MMS, with budgets of rounds that grow pass by pass). Parts\n"
+      "whose goal equals their start\n"
       "leave the obstacles' bounding box; the others go to their goals. Writes "
       "DIR/step-K.scene.json\n"
       "and step-K.path.json per step, DIR/disassembly.{scene,path}.json (the whole motion, "

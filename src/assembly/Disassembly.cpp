@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "check/PathChecker.h"
@@ -59,13 +60,15 @@ Scene DisassemblyPlanner::stepScene(const std::vector<size_t>& moving) const {
 
 // Where robot `robot` of a step may go to leave the static part's box, given the step's
 // obstacles only (the other moving part is ignored): points of the exact free space at its
-// angle that lie outside the box and in the same cell as its start, so reachable when alone.
-// Best first: farthest from the box, so parked parts stay out of the way of the later ones.
+// angle that lie outside the box. A translating part can reach only those in its start's cell;
+// a rigid one may turn on its way, so any will do, those in its start's cell first. Then
+// farthest from the box first, so parked parts stay out of the way of the later ones.
 std::vector<Pose> DisassemblyPlanner::targetsFor(const Scene& step, const CollisionChecker& checker,
                                                  size_t robot, size_t count) const {
   const Scene contact = withContactShapes(step, checker);
   const SliceWorld world(contact, robot);
   const Pose start = step.robots[robot].start;
+  const bool rigid = step.robots[robot].motion == Motion::Rigid;
   const Slice free(world, exact::rationalAngleNear(start.theta, 30));
   const int startCell = free.locate({start.x, start.y});
   if (startCell < 0) return {};
@@ -75,18 +78,27 @@ std::vector<Pose> DisassemblyPlanner::targetsFor(const Scene& step, const Collis
                         {box_.xmin, box_.ymax}};
   const Slice outside(free, {MovedShape{0, 0, boxRing, {0, 0}}});  // the box as one more obstacle
   Random rng(attemptSeed_);
-  std::vector<std::pair<double, Pose>> found;
+  struct Found {
+    bool startCell;
+    double distance;
+    Pose pose;
+  };
+  std::vector<Found> found;
   for (size_t c = 0; c < outside.fscCount(); ++c)
     for (int k = 0; k < 8; ++k) {
       const auto p = samplePointInCell(outside, c, rng, 32);
-      if (!p || free.locate(*p) != startCell) continue;
+      if (!p) continue;
+      const bool inStartCell = free.locate(*p) == startCell;
+      if (!inStartCell && !rigid) continue;
       const Pose q{p->x, p->y, start.theta};
-      found.push_back({boundingBox(placedRing(step.robots[robot].shape, q)).distance(box_), q});
+      found.push_back(
+          {inStartCell, boundingBox(placedRing(step.robots[robot].shape, q)).distance(box_), q});
     }
-  std::sort(found.begin(), found.end(),
-            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::sort(found.begin(), found.end(), [](const Found& a, const Found& b) {
+    return a.startCell != b.startCell ? a.startCell : a.distance > b.distance;
+  });
   std::vector<Pose> out;
-  for (size_t i = 0; i < found.size() && out.size() < count; ++i) out.push_back(found[i].second);
+  for (size_t i = 0; i < found.size() && out.size() < count; ++i) out.push_back(found[i].pose);
   return out;
 }
 
@@ -106,31 +118,50 @@ void DisassemblyPlanner::record(DisassemblyStep step, DisassemblyResult& out) {
   out.steps.push_back(std::move(step));
 }
 
-bool DisassemblyPlanner::trySingle(size_t part, const Termination& stop, DisassemblyResult& out) {
+DisassemblyPlanner::Attempt DisassemblyPlanner::trySingle(size_t part, size_t rounds,
+                                                          const Termination& stop,
+                                                          DisassemblyResult& out) {
   Stopwatch watch;
   Scene step = stepScene({part});
   const Robot& original = scene_.robots[part];
+  const bool rigid = original.motion == Motion::Rigid;
   Pose goal = original.goal;
   if (samePose(original.start, original.goal)) {
     const auto targets = targetsFor(step, CollisionChecker(step), 0, 1);
-    if (targets.empty()) return false;  // exact for a translating part: it cannot leave alone
+    if (targets.empty()) {
+      reasons_.push_back(original.name + (rigid ? ": no free place outside the static part's box "
+                                                  "within the bounds at its angle"
+                                                : ": cannot leave alone (its exact free space)"));
+      return Attempt::Never;
+    }
     goal = targets.front();
   }
   step.robots[0].goal = goal;
   ++out.attempts;
   OneRobotSettings settings;
   settings.seed = attemptSeed_++;
+  settings.maxRounds = rounds;
   OneRobotPlanner planner(step, 0, settings);
   const OneRobotResult r = planner.solve(pose_[part], goal, stop);
-  if (r.status != PlanStatus::Found) return false;
-  record({{part}, {part}, std::move(step), r.waypoints, watch.seconds()}, out);
-  return true;
+  if (r.status == PlanStatus::Found) {
+    record({{part}, {part}, std::move(step), r.waypoints, watch.seconds()}, out);
+    return Attempt::Step;
+  }
+  // A translating part's free space is one slice: no path is a proof.
+  if (!rigid || !r.stats.noPath.empty()) {
+    reasons_.push_back(original.name + ": cannot leave alone (" +
+                       (rigid ? r.stats.noPath : std::string("its exact free space")) + ")");
+    return Attempt::Never;
+  }
+  singleRounds_ = std::max(singleRounds_, rounds);
+  return Attempt::NotYet;
 }
 
 // Parts a and b move together; `returning` is -1 (both leave) or the index (0: a, 1: b) of a
 // helper that makes room and goes back to where it was.
-bool DisassemblyPlanner::tryPair(size_t a, size_t b, int returning, size_t rounds,
-                                 const Termination& stop, DisassemblyResult& out) {
+DisassemblyPlanner::Attempt DisassemblyPlanner::tryPair(size_t a, size_t b, int returning,
+                                                        size_t rounds, const Termination& stop,
+                                                        DisassemblyResult& out) {
   Stopwatch watch;
   Scene step = stepScene({a, b});
   const CollisionChecker checker(step);
@@ -143,7 +174,7 @@ bool DisassemblyPlanner::tryPair(size_t a, size_t b, int returning, size_t round
       goals[m] = {original.goal};
     else
       goals[m] = targetsFor(step, checker, m, 6);
-    if (goals[m].empty()) return false;  // it cannot leave even with the other one gone
+    if (goals[m].empty()) return Attempt::Never;  // it cannot leave even with the other one gone
   }
   bool paired = false;
   for (size_t i = 0; i < goals[0].size() && !paired; ++i)
@@ -153,19 +184,69 @@ bool DisassemblyPlanner::tryPair(size_t a, size_t b, int returning, size_t round
         step.robots[1].goal = goals[1][j];
         paired = true;
       }
-  if (!paired || stop()) return false;
+  if (!paired || stop()) return Attempt::NotYet;
   ++out.attempts;
   TwoRobotSettings settings;
   settings.seed = attemptSeed_++;
   settings.maxRounds = rounds;
   TwoRobotPlanner planner(step, settings);
   const TwoRobotResult r = planner.solve(Termination(stop.secondsLeft(), stop.cancelFlag()));
-  if (r.status != PlanStatus::Found) return false;
+  pairRounds_ = std::max(pairRounds_, rounds);
+  if (r.status != PlanStatus::Found) return Attempt::NotYet;
   std::vector<size_t> removed;
   if (returning != 0) removed.push_back(a);
   if (returning != 1) removed.push_back(b);
   record({{a, b}, removed, std::move(step), r.waypoints, watch.seconds()}, out);
-  return true;
+  return Attempt::Step;
+}
+
+// Each part alone, then (three hands) each pair, at the budgets of pass `pass`. A part whose
+// attempt alone proved it cannot leave is not tried alone again until a step moves another.
+DisassemblyPlanner::Attempt DisassemblyPlanner::tryPass(const std::vector<size_t>& left,
+                                                        size_t pass, const Termination& stop,
+                                                        DisassemblyResult& out) {
+  bool more = false;  // whether a later pass, with larger budgets, could find a step
+  for (const size_t p : left) {
+    if (neverAlone_[p] || stop()) continue;
+    const Attempt a = trySingle(p, settings_.firstSingleRounds + pass, stop, out);
+    if (a == Attempt::Step) return a;
+    if (a == Attempt::Never) neverAlone_[p] = true;
+    more = more || a == Attempt::NotYet;
+  }
+  if (!settings_.pairs) return more ? Attempt::NotYet : Attempt::Never;
+  for (size_t i = 0; i < left.size(); ++i)
+    for (size_t j = i + 1; j < left.size(); ++j)
+      for (const int returning : {-1, 0, 1}) {
+        if (stop()) return Attempt::NotYet;
+        const Attempt a =
+            tryPair(left[i], left[j], returning, settings_.firstPairRounds + pass, stop, out);
+        if (a == Attempt::Step) return a;
+        more = more || a == Attempt::NotYet;
+      }
+  return more ? Attempt::NotYet : Attempt::Never;
+}
+
+// "A: cannot leave alone (its exact free space)" where that was proved; otherwise what was
+// tried and for how long.
+std::string DisassemblyPlanner::whyStuck(const std::vector<size_t>& left, size_t passes,
+                                         bool proved, const DisassemblyResult& out,
+                                         const Termination& stop) const {
+  std::string proofs;
+  for (const std::string& r : reasons_) proofs += (proofs.empty() ? "" : "; ") + r;
+  if (proved)
+    return proofs + (settings_.pairs && left.size() >= 2
+                         ? "; no two can leave together either, each alone having no place to go"
+                         : (left.size() >= 2 ? "; pairs not tried (one part at a time)" : ""));
+  char text[256];
+  std::snprintf(text, sizeof text, "no step found in %.3g s%s: %zu passes, %zu planner runs",
+                out.seconds, stop.cancelled() ? "" : " (the time limit)", passes, out.attempts);
+  std::string why = text;
+  if (singleRounds_)
+    why += ", a rigid part alone up to " + std::to_string(singleRounds_) +
+           " rounds of the one-robot MMS";
+  if (pairRounds_)
+    why += ", two together up to " + std::to_string(pairRounds_) + " rounds of the two-robot MMS";
+  return why + (proofs.empty() ? "" : "; " + proofs);
 }
 
 DisassemblyResult DisassemblyPlanner::solve(
@@ -178,28 +259,18 @@ DisassemblyResult DisassemblyPlanner::solve(
     for (size_t i = 0; i < done_.size(); ++i)
       if (!done_[i]) left.push_back(i);
     if (left.empty()) break;
-    bool found = false;
-    for (const size_t p : left)
-      if (!stop() && trySingle(p,
-                               Termination(std::min(settings_.singleSeconds, stop.secondsLeft()),
-                                           stop.cancelFlag()),
-                               out)) {
-        found = true;
-        break;
-      }
-    // Pairs under a budget that doubles every pass: a hard pair is not given up early.
-    for (size_t rounds = settings_.firstPairRounds;
-         !found && settings_.pairs && left.size() >= 2 && !stop(); ++rounds) {
-      for (size_t i = 0; i < left.size() && !found; ++i)
-        for (size_t j = i + 1; j < left.size() && !found; ++j)
-          for (const int returning : {-1, 0, 1})
-            if (!stop() && tryPair(left[i], left[j], returning, rounds, stop, out)) {
-              found = true;
-              break;
-            }
-    }
-    if (!found) {
+    // Passes under budgets that double every pass, so a hard part or pair is not given up
+    // early, until a step, the limit or a proof that no pass can find one.
+    neverAlone_.assign(scene_.robots.size(), false);
+    singleRounds_ = pairRounds_ = 0;
+    Attempt a = Attempt::NotYet;
+    size_t passes = 0;
+    reasons_.clear();
+    while (a == Attempt::NotYet && !stop()) a = tryPass(left, passes++, stop, out);
+    if (a != Attempt::Step) {
       out.stuck = left;
+      out.seconds = clock.seconds();
+      out.stuckBecause = whyStuck(left, passes, a == Attempt::Never, out, stop);
       break;
     }
     if (progress) progress(out.steps.size() - 1, out.steps.back());

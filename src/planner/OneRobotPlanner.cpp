@@ -288,6 +288,7 @@ OneRobotResult OneRobotPlanner::solveRounds(
   h.report = [&] { report(true); };
   size_t roundsWithoutPath = 0;
   h.next = [&] {
+    if (settings_.maxRounds && stats_.rounds >= settings_.maxRounds) return false;
     // A second round without a path: before doubling, whether any path exists (NoPath.h). After
     // the first, it would cost the runs that succeed in round two one more slice (4 % of them).
     if (++roundsWithoutPath == 2) {

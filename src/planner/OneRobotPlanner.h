@@ -51,6 +51,9 @@ struct OneRobotSettings {
   /// Threads that build slices (each round's slices in batches of this many). The result does
   /// not depend on it: slices are added to the roadmap in angle order.
   unsigned threads = 1;
+  /// Give up after this many rounds of the roadmap's life (0: only the time limit stops it). A
+  /// budget in rounds, unlike one in seconds, gives the same answer for the seed on any machine.
+  size_t maxRounds = 0;
   /// Keeps what a record of the planning needs beyond the manifolds' time stamps: when each
   /// joined the start's and the goal's component (a pass over the nodes per search).
   bool record = false;

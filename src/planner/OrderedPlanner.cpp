@@ -1,7 +1,6 @@
 #include "planner/OrderedPlanner.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -212,11 +211,10 @@ bool OrderedPlanner::turnAlone(size_t robot, const Termination& stop) {
   if (scene_.robots[robot].motion != Motion::Rigid) return false;
   const TimeCharge charge(stats_.turnSeconds);
   const Scene sub = heldScene({robot});
-  std::atomic<bool> enough{false};
-  OneRobotPlanner p(sub, 0, seeded(OneRobotSettings{}));
-  const OneRobotResult res =
-      p.solve(sub.robots[0].start, sub.robots[0].goal, stop.endingAlsoOn(&enough),
-              [&](const OneRobotStats& st) { enough = st.rounds >= kTurnRounds; });
+  OneRobotSettings turn;
+  turn.maxRounds = kTurnRounds;
+  OneRobotPlanner p(sub, 0, seeded(turn));
+  const OneRobotResult res = p.solve(sub.robots[0].start, sub.robots[0].goal, stop);
   if (res.status != PlanStatus::Found) return false;
   for (size_t k = 1; k < res.waypoints.size(); ++k)
     path_.push_back(withMoved({robot}, res.waypoints[k]));

@@ -151,6 +151,10 @@ TEST(Assembly, OnePartAloneIsStuckExactlyAndByFloodFill) {
   const DisassemblyResult r = DisassemblyPlanner(s, one).solve(Termination(planSeconds(20)));
   EXPECT_TRUE(r.steps.empty());
   EXPECT_EQ(r.stuck, (std::vector<size_t>{0, 1}));
+  // Decided, not given up: each part's exact free space is the proof.
+  EXPECT_EQ(r.stuckBecause,
+            "A: cannot leave alone (its exact free space); B: cannot leave alone (its exact free "
+            "space); pairs not tried (one part at a time)");
   const CollisionChecker checker(s);
   const Box box = obstaclesBox(s);
   for (size_t moving = 0; moving < 2; ++moving) {
@@ -205,6 +209,40 @@ TEST(Assembly, MixedRigidAndTranslatingRobots) {
   ASSERT_EQ(r.status, PlanStatus::Found);
   EXPECT_TRUE(checkPath(s, checker, r.waypoints).ok);
   for (const Config& q : r.waypoints) EXPECT_EQ(q[5], 0.0);
+}
+
+// A rigid part that must turn to leave gets the rigid planner: the bar stands upright in a box
+// whose one opening is a slot in its side, so it turns level on its way out.
+TEST(Assembly, ARigidPartTurnsOnItsWayOut) {
+  const Scene s = loadScene(scenario("assembly/turn-out.json"));
+  const DisassemblyResult r = DisassemblyPlanner(s).solve(Termination(planSeconds(60)));
+  ASSERT_TRUE(r.complete()) << r.stuckBecause;
+  ASSERT_EQ(r.steps.size(), 1u);
+  const CollisionChecker checker(r.finalScene);
+  EXPECT_TRUE(checkPath(r.finalScene, checker, r.path).ok);
+  EXPECT_GT(partBox(s, 0, poseOf(r.path.back(), 0)).distance(obstaclesBox(s)), 0);
+  // Through the slot (0.6 high, 0.5 long) the bar of 3 x 0.3 lies within 30 degrees of level.
+  bool level = false;
+  for (const Config& q : r.path)
+    if (std::abs(std::sin(q[2])) < 0.5 && q[0] > 2 && q[0] < 2.5) level = true;
+  EXPECT_TRUE(level);
+}
+
+// A rigid part that cannot leave is tried with budgets that double pass by pass until the
+// time limit, and the result says what was tried: here the upright bar's box is too narrow
+// for it to turn level (1.5 wide for a bar of 3).
+TEST(Assembly, AStuckRigidPartIsTriedUntilTheLimitAndSaysWhatWasTried) {
+  Scene s = loadScene(scenario("assembly/turn-out.json"));
+  s.obstacles[0][5] = {0.5, -2.0}, s.obstacles[0][6] = {0.5, 2.0};  // the box's inner left wall
+  s.robots[0].start.x = s.robots[0].goal.x = 1.25;
+  const double limit = 1.5;
+  const DisassemblyResult r = DisassemblyPlanner(s).solve(Termination(limit));
+  EXPECT_EQ(r.stuck, std::vector<size_t>{0});
+  EXPECT_GE(r.seconds, limit * 0.9);
+  EXPECT_GE(r.attempts, 2u) << r.stuckBecause;
+  EXPECT_NE(r.stuckBecause.find("(the time limit)"), std::string::npos) << r.stuckBecause;
+  EXPECT_NE(r.stuckBecause.find("rounds of the one-robot MMS"), std::string::npos)
+      << r.stuckBecause;
 }
 
 // Assembly 2 with mms assemble: the triangles leave first (the one under the wide M needs it
