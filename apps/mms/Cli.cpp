@@ -128,8 +128,23 @@ std::string paramHelp(const DeclaredParam& d) {
     }
     help += " (default " + defaults + ")";
   }
-  if (all.size() < mms::planners().size()) help += " [" + plannerList(all) + "]";
+  // The planners that take it, where its group's title (paramGroup) does not say so.
+  const std::string takers = plannerList(all);
+  if (all.size() < mms::planners().size() && takers != "every OMPL planner" && takers != "auto" &&
+      takers != "auto, mms, mms-ordered, mms-joint")
+    help += " [" + takers + "]";
   return help;
+}
+
+// Where a parameter is listed in mms plan --help: by the planners that take it.
+std::string paramGroup(const DeclaredParam& d) {
+  auto ours = [](const std::string& n) { return n == "auto" || n.rfind("mms", 0) == 0; };
+  size_t mine = 0;
+  for (const auto& [name, value] : d.users) mine += ours(name) ? 1 : 0;
+  if (d.users.size() == 1 && d.users[0].first == "auto") return "The default planner (auto)";
+  if (mine == d.users.size()) return "MMS (auto, mms, mms-ordered, mms-joint)";
+  if (mine == 0) return "OMPL's planners";
+  return "Every planner: the path optimiser";
 }
 
 std::string typeName(const mms::ParamSpec& spec) {
@@ -159,10 +174,12 @@ CLI::Option* numberIn(CLI::Option* o, double lo, double hi) {
 }
 
 CLI::Option* sceneArg(CLI::App* cmd, std::string& v, const std::string& help) {
-  return cmd->add_option("SCENE", v, help + " (-: standard input)")->required();
+  return cmd->add_option("SCENE", v, help + " (-: standard input)")->required()->type_name("FILE");
 }
-CLI::Option* outputOption(CLI::App* cmd, std::string& v, const std::string& help) {
-  return cmd->add_option("-o,--output", v, help)->required();
+// `type`: what is written, FILE or DIR (a folder of files).
+CLI::Option* outputOption(CLI::App* cmd, std::string& v, const std::string& help,
+                          const char* type = "FILE") {
+  return cmd->add_option("-o,--output", v, help)->required()->type_name(type);
 }
 CLI::Option* quietFlag(CLI::App* cmd, bool& v, const std::string& help) {
   return cmd->add_flag("-q,--quiet", v, help);
@@ -171,7 +188,7 @@ CLI::Option* quietFlag(CLI::App* cmd, bool& v, const std::string& help) {
 CLI::Option* sceneAndPath(CLI::App* cmd, std::string& scene, std::string& path,
                           const std::string& sceneHelp, const std::string& pathHelp) {
   sceneArg(cmd, scene, sceneHelp);
-  return cmd->add_option("PATH", path, pathHelp + " (-: standard input)");
+  return cmd->add_option("PATH", path, pathHelp + " (-: standard input)")->type_name("FILE");
 }
 
 // The file a conversion writes, and silence on success.
@@ -278,6 +295,7 @@ class PlannerParamOptions {
                            ? cmd->add_flag("--" + spec.name, flag_[spec.name], help)
                            : cmd->add_option("--" + spec.name, text_[spec.name], help)
                                  ->type_name(typeName(spec));
+      o->group(paramGroup(d));
       options_.emplace_back(spec, o);
     }
   }
@@ -314,46 +332,65 @@ Command addPlan(CLI::App& app) {
       "lines). Exit 0 path found and certified, 1 no path within the time limit, 2 bad input",
       [](CLI::App* planCmd, PlanArgs& pa) {
         sceneArg(planCmd, pa.scene, "Scene file");
-        planCmd->add_option("-o,--output", pa.output,
-                            "Write the path (mms-path/1) here (-: standard output)");
-        planCmd->add_option(
-            "--svg", pa.svg,
-            "Write an animated SVG of the scene and path here (-: standard output)");
-        seedOption(planCmd, pa.seed, "Random seed (same seed, same path)");
-        numberIn(planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
-                     ->capture_default_str(),
-                 0.01, 1e6);
-        memoryLimitOption(
-            planCmd, pa.memoryMb,
-            "MB of address space; beyond it the run ends with \'out of memory\' (0: none)");
-        quietFlag(planCmd, pa.quiet, "No progress messages on stderr");
         std::string plannerHelp =
             std::string("The planner (default ") + mms::kDefaultPlanner + "):";
         for (const mms::PlannerInfo& p : mms::planners())
           plannerHelp += "\n  " + p.name + ": " + p.summary;
         planCmd->add_option("--planner", pa.planner, plannerHelp)
-            ->check(CLI::IsMember(plannerNames()));
+            ->check(CLI::IsMember(plannerNames()))
+            ->group("Planner");
+        seedOption(planCmd, pa.seed, "Random seed (same seed, same path)")->group("Planner");
+        numberIn(planCmd->add_option("--time-limit", pa.timeLimit, "Seconds before giving up")
+                     ->capture_default_str()
+                     ->group("Limits"),
+                 0.01, 1e6);
+        memoryLimitOption(
+            planCmd, pa.memoryMb,
+            "MB of address space; beyond it the run ends with \'out of memory\' (0: none)")
+            ->group("Limits");
+        planCmd
+            ->add_option("-o,--output", pa.output,
+                         "Write the path (mms-path/1) here (-: standard output)")
+            ->type_name("FILE")
+            ->group("Outputs");
+        planCmd
+            ->add_option("--svg", pa.svg,
+                         "Write an animated SVG of the scene and path here (-: standard output)")
+            ->type_name("FILE")
+            ->group("Outputs");
+        quietFlag(planCmd, pa.quiet, "No progress messages on stderr")->group("Outputs");
+        planCmd
+            ->add_option(
+                "--stats-json", pa.statsJson,
+                "Write a JSON summary of the run (status, times, sizes) here (-: standard output)")
+            ->type_name("FILE")
+            ->group("Outputs");
+        planCmd
+            ->add_flag("--svg-roadmap", pa.svgRoadmap,
+                       "In the SVG, also draw the lines' points and the free-space cells of the "
+                       "slices the path uses (one robot: auto then runs MMS alone)")
+            ->group("Outputs");
+        planCmd
+            ->add_flag("--save-roadmap", pa.saveRoadmap,
+                       "One robot: keep the free-space cells the path uses and the lines' points "
+                       "in the path file, for mms view (auto then runs MMS alone)")
+            ->group("Outputs");
+        planCmd
+            ->add_option(
+                "--record", pa.record,
+                "Write a record of the planning (mms-record/1): what the planner built and when "
+                "(MMS: its slices' cells, lines' arcs, subspaces and components; OMPL: its tree "
+                "or graph), for mms view --record; with several queries, numbered files")
+            ->type_name("FILE")
+            ->group("Outputs");
+        planCmd
+            ->add_option("--queries", pa.queries,
+                         "Answer several queries on one roadmap: a JSON file {\"format\": "
+                         "\"mms-queries/1\", \"queries\": [{\"start\": [x,y,theta], \"goal\": "
+                         "[x,y,theta]}, ...]}; with -o/--svg, files are numbered (out.0.json, ...)")
+            ->type_name("FILE")
+            ->group("Planner");
         auto params = std::make_shared<PlannerParamOptions>(planCmd);
-        planCmd->add_option(
-            "--stats-json", pa.statsJson,
-            "Write a JSON summary of the run (status, times, sizes) here (-: standard output)");
-        planCmd->add_flag("--svg-roadmap", pa.svgRoadmap,
-                          "In the SVG, also draw the lines' points and the free-space cells of the "
-                          "slices the path uses (one robot: auto then runs MMS alone)");
-        planCmd->add_flag(
-            "--save-roadmap", pa.saveRoadmap,
-            "One robot: keep the free-space cells the path uses and the lines' points in "
-            "the path file, for mms view (auto then runs MMS alone)");
-        planCmd->add_option(
-            "--record", pa.record,
-            "Write a record of the planning (mms-record/1): what the planner built and when "
-            "(MMS: its slices' cells, lines' arcs, subspaces and components; OMPL: its tree "
-            "or graph), for mms view --record; with several queries, numbered files");
-        planCmd->add_option(
-            "--queries", pa.queries,
-            "Answer several queries on one roadmap: a JSON file {\"format\": \"mms-queries/1\", "
-            "\"queries\": [{\"start\": [x,y,theta], \"goal\": [x,y,theta]}, ...]}; with -o/--svg, "
-            "files are numbered (out.0.json, ...)");
         return params;
       },
       run);
@@ -413,7 +450,8 @@ Command addView(CLI::App& app) {
         outputOption(cmd, a.output, "HTML file to write (-: standard output)");
         cmd->add_option("--record", a.record,
                         "A record of the planning (mms plan --record): a second slider steps "
-                        "through what the planner built, with layers and its phases");
+                        "through what the planner built, with layers and its phases")
+            ->type_name("FILE");
       });
 }
 
@@ -424,7 +462,9 @@ Command addImport(CLI::App& app) {
       "names) or a discopygal JSON scene. Notes on stderr say what the conversion changed.\n"
       "(plan, validate, check, render and view read these files directly too)",
       importScene, [](CLI::App* cmd, ImportArgs& a) {
-        cmd->add_option("FILE", a.input, "OMPL.app .cfg or discopygal .json")->required();
+        cmd->add_option("FILE", a.input, "OMPL.app .cfg or discopygal .json")
+            ->required()
+            ->type_name("FILE");
         convertedOutput(cmd, a.output, a.quiet, "Scene file");
         cmd->add_option(
             "--bounds", a.bounds,
@@ -470,7 +510,8 @@ Command addLab(CLI::App& app) {
             ->add_option("-o,--output", la.output,
                          "Folder for the report (created if missing; docs/theory in a checkout "
                          "rewrites the docs' plots)")
-            ->required();
+            ->required()
+            ->type_name("DIR");
         seedOption(labCmd, la.seed, "Random seed (same seed, same report)");
         labCmd
             ->add_option("--trials", la.trials, "Trials per setting (0: the experiment's default)")
@@ -504,9 +545,11 @@ Command addAssemble(CLI::App& app) {
       "and DIR/disassembly.json (the sequence). Exit 1 when parts remain stuck.",
       [](CLI::App* assembleCmd, AssembleArgs& aa) {
         sceneArg(assembleCmd, aa.scene, "Scene file (mms-scene/1)");
-        outputOption(assembleCmd, aa.output, "Directory for the files");
-        assembleCmd->add_option(
-            "--svg", aa.svg, "Write an animated SVG of the whole disassembly (-: standard output)");
+        outputOption(assembleCmd, aa.output, "Directory for the files", "DIR");
+        assembleCmd
+            ->add_option("--svg", aa.svg,
+                         "Write an animated SVG of the whole disassembly (-: standard output)")
+            ->type_name("FILE");
         seedOption(assembleCmd, aa.seed, "Random seed");
         numberIn(
             assembleCmd->add_option("--time-limit", aa.timeLimit, "Seconds for the whole sequence")
@@ -523,37 +566,14 @@ Command addAssemble(CLI::App& app) {
       run);
 }
 
-// What `mms scenario --help` says of each scene it writes.
-constexpr const char* kScenarioSummary =
-    "Write one of the paper's scenarios as a scene file: pacman (--tightness), viking-helmet, "
-    "random-polygons (--seed), assembly-1 and assembly-2 (--slack), a random test scene "
-    "(random: --seed, --robots, --obstacles), carry-turn (--seed: a gripper and the part it "
-    "holds turn together in a tight chamber), niche-swap (--seed: two robots swap the ends "
-    "of a corridor with a niche), niche-three (--seed: two robots cross a corridor in which a "
-    "third must wait in a niche), discs-swap (--seed: 4-5 discs round a block to each "
-    "other's places), discs-room (--seed, --robots: discs cross an open room among "
-    "obstacles), open-clutter (--seed: one or two L-shaped robots cross random "
-    "convex clutter), bend (--seed: a plank turns the corner of an L-shaped corridor), doors "
-    "(--seed: a long robot lines up with the doors of 1-3 thin walls), keyhole (--seed, "
-    "--slack: a key passes a keyhole, turns a quarter in a chamber barely larger than its "
-    "turn, and leaves through a side slot), swallow (--seed, --slack: a U takes a part into "
-    "its mouth and turns half round about it in a bay barely larger than that turn), "
-    "swallow-two (--seed, --slack: the same with the part a robot too, which waits while the U "
-    "turns about it and then leaves the other way), "
-    "disc-grid (--seed, --robots, --spacing: unit discs on a grid go to the same grid moved "
-    "aside), disc-triangles (--seed, --robots: unit discs among random triangles) or disc-box "
-    "(--seed, --robots: discs of radius 0.5 packed touching in a walled box, shuffled) or "
-    "warehouse (--seed, --robots: rectangular carts among shelves turn where there is room); "
-    "round-room (--seed, --robots: 3-5 discs that nearly fill a round room go round to each "
-    "other's places)";
-
-// "pacman, viking-helmet, ... or round-room": the catalogue's names, so that the help lists
-// every family the catalogue has.
+// The families, one a line: "  keyhole (--seed, --slack): a key passes ...".
 std::string scenarioList() {
-  const std::vector<std::string>& names = mms::scenarioNames();
-  std::string list;
-  for (size_t i = 0; i < names.size(); ++i)
-    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  std::string list = "The scene to write:";
+  for (const mms::ScenarioInfo& f : mms::scenarios()) {
+    std::string settings = f.seeded ? "--seed" : "";
+    for (const std::string& s : f.settings) settings += (settings.empty() ? "--" : ", --") + s;
+    list += "\n  " + f.name + (settings.empty() ? "" : " (" + settings + ")") + ": " + f.summary;
+  }
   return list;
 }
 
@@ -564,11 +584,14 @@ Command addScenario(CLI::App& app) {
     return scenario(a);
   };
   return command<ScenarioArgs>(
-      app, "scenario", kScenarioSummary,
+      app, "scenario",
+      "Write a scene file: one of the paper's scenes or a generated family's (NAME below lists "
+      "them, each with the settings it takes)",
       [](CLI::App* scenarioCmd, ScenarioArgs& sa) {
         scenarioCmd->add_option("NAME", sa.name, scenarioList())
             ->required()
-            ->check(CLI::IsMember(mms::scenarioNames()));
+            ->check(CLI::IsMember(mms::scenarioNames()))
+            ->type_name("NAME");
         outputOption(scenarioCmd, sa.output, "Scene file to write (-: standard output)");
         numberIn(scenarioCmd
                      ->add_option("--tightness", sa.tightness,
@@ -633,8 +656,8 @@ Command addMerge(CLI::App& app) {
       app, "bench-merge",
       "Merge the runs of several mms bench folders (shards) into one, with reports",
       [](CLI::App* cmd, Folders& f) {
-        cmd->add_option("DIRS", f.first, "Benchmark folders")->required();
-        outputOption(cmd, f.second, "Merged folder");
+        cmd->add_option("DIRS", f.first, "Benchmark folders")->required()->type_name("DIR");
+        outputOption(cmd, f.second, "Merged folder", "DIR");
       },
       run);
 }
@@ -680,8 +703,10 @@ Command addBench(CLI::App& app, const std::vector<std::string>& argv) {
       "ompl_benchmark_statistics / Planner Arena) and, with a\n"
       "sweep, DIR/tightness.svg",
       [](CLI::App* benchCmd, BenchOptions& ba) {
-        benchCmd->add_option("SCENES", ba.scenes, "Scene files")->check(CLI::ExistingFile);
-        outputOption(benchCmd, ba.output, "Results folder");
+        benchCmd->add_option("SCENES", ba.scenes, "Scene files")
+            ->check(CLI::ExistingFile)
+            ->type_name("FILE");
+        outputOption(benchCmd, ba.output, "Results folder", "DIR");
         benchCmd
             ->add_option("--planners", ba.planners,
                          "Comma-separated planners (see mms plan --help for every name)")

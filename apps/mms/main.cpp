@@ -5,6 +5,7 @@
 
 #include "Cli.h"
 #include "Commands.h"
+#include "HelpFormat.h"
 #include "mms/mms.h"
 #include "util/CommandBoundary.h"
 
@@ -15,6 +16,8 @@ int main(int argc, char** argv) {
       "mms: motion planning via manifold samples for planar polygonal robots.\n"
       "Scene and path formats: docs/formats.md. Exit codes: 0 success, 1 negative answer,\n"
       "2 bad input, 3 internal error."};
+  // Before the subcommands, which take the app's formatter when they are added.
+  app.formatter(std::make_shared<HelpFormatter>(helpWidth()));
   app.set_version_flag("--version", std::string("mms ") + mms::version());
   app.require_subcommand(1);
   const std::vector<std::string> args(argv + 1, argv + argc);

@@ -12,14 +12,53 @@
 
 namespace mms {
 
+const std::vector<ScenarioInfo>& scenarios() {
+  static const std::vector<ScenarioInfo> all{
+      {"pacman", {"tightness"}, "the paper's Pacman and the square in its mouth", false},
+      {"viking-helmet", {}, "the paper's Viking helmet", false},
+      {"random-polygons", {}, "the paper's two robots among random polygons"},
+      {"assembly-1", {"slack"}, "the paper's assembly 1: two hooked parts in a shaft", false},
+      {"assembly-2",
+       {"slack", "m-parts-only"},
+       "the paper's assembly 2: two M parts and three triangles",
+       false},
+      {"random", {"robots", "obstacles"}, "a random test scene of 1 or 2 robots"},
+      {"carry-turn", {"slack"}, "a gripper and the part it holds turn together in a chamber"},
+      {"niche-swap", {"slack"}, "two robots swap the ends of a corridor with a niche"},
+      {"niche-three", {}, "two robots cross a corridor in which a third waits in a niche"},
+      {"discs-swap", {}, "4-5 discs round a block to each other's places"},
+      {"discs-room", {"robots"}, "discs cross an open room among obstacles"},
+      {"open-clutter", {}, "one or two L-shaped robots cross random convex clutter"},
+      {"bend", {}, "a plank turns the corner of an L-shaped corridor"},
+      {"doors", {}, "a long robot lines up with the doors of 1-3 thin walls"},
+      {"keyhole",
+       {"slack"},
+       "a key passes a keyhole, turns a quarter in a chamber barely larger than its turn, and "
+       "leaves through a side slot"},
+      {"swallow",
+       {"slack"},
+       "a U takes a part into its mouth and turns half round about it in a bay barely larger "
+       "than that turn"},
+      {"swallow-two",
+       {"slack"},
+       "the swallow with the part a robot too, which waits while the U turns about it and then "
+       "leaves the other way"},
+      {"disc-grid", {"robots", "spacing"}, "unit discs on a grid go to the same grid moved aside"},
+      {"disc-triangles", {"robots"}, "unit discs among random triangles"},
+      {"disc-box", {"robots"}, "discs of radius 0.5 packed touching in a walled box, shuffled"},
+      {"warehouse", {"robots"}, "rectangular carts among shelves turn where there is room"},
+      {"round-room",
+       {"robots"},
+       "3-5 discs that nearly fill a round room go round to each other's places"}};
+  return all;
+}
+
 const std::vector<std::string>& scenarioNames() {
-  static const std::vector<std::string> names{
-      "pacman",      "viking-helmet", "random-polygons", "assembly-1",
-      "assembly-2",  "random",        "carry-turn",      "niche-swap",
-      "niche-three", "discs-swap",    "discs-room",      "open-clutter",
-      "bend",        "doors",         "keyhole",         "swallow",
-      "swallow-two", "disc-grid",     "disc-triangles",  "disc-box",
-      "warehouse",   "round-room"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const ScenarioInfo& s : scenarios()) out.push_back(s.name);
+    return out;
+  }();
   return names;
 }
 
@@ -30,9 +69,10 @@ void requireRange(const std::string& prefix, const char* setting, double v, doub
                      ", " + formatNumber(hi) + "]");
 }
 
-// Whether the family's scene depends on --seed: all but the paper's fixed scenes (generate()).
-bool usesSeed(const std::string& n) {
-  return n != "pacman" && n != "viking-helmet" && n != "assembly-1" && n != "assembly-2";
+const ScenarioInfo& infoOf(const std::string& name) {
+  for (const ScenarioInfo& s : scenarios())
+    if (s.name == name) return s;
+  throw std::logic_error("no scenario " + name);
 }
 
 // The robots r.translate names made translation-only, the scene named apart: before its seed
@@ -43,7 +83,7 @@ void translateOnly(Scene& s, const ScenarioRequest& r, const std::string& prefix
   const std::string scene = s.name;
   std::string seed(1, '-');  // appended, not "-" + ...: GCC 12 warns (-Wrestrict) on that here
   seed += std::to_string(r.seed);
-  const bool seeded = usesSeed(r.name) && scene.size() > seed.size() &&
+  const bool seeded = infoOf(r.name).seeded && scene.size() > seed.size() &&
                       scene.compare(scene.size() - seed.size(), seed.size(), seed) == 0;
   const size_t at = seeded ? scene.size() - seed.size() : scene.size();
   std::string suffix;
@@ -71,7 +111,7 @@ void translateOnly(Scene& s, const ScenarioRequest& r, const std::string& prefix
   s.name = scene.substr(0, at) + suffix + scene.substr(at);
 }
 
-// A family added here without a seed belongs in usesSeed() too.
+// A family added here is declared in scenarios() too.
 Scene generate(const ScenarioRequest& r) {
   const std::string& n = r.name;
   if (n == "pacman") return pacmanScene(r.tightness);
@@ -105,19 +145,13 @@ Scene generate(const ScenarioRequest& r) {
 // refused rather than silently ignored (keyhole --tightness 0.5 made the keyhole it always does).
 void refuseSettingsNotTaken(const ScenarioRequest& r, const std::string& prefix) {
   const std::string& n = r.name;
-  const bool slack = n == "assembly-1" || n == "assembly-2" || n == "carry-turn" ||
-                     n == "niche-swap" || n == "keyhole" || n == "swallow" || n == "swallow-two";
-  const bool robots = n == "random" || n == "discs-room" || n == "round-room" || n == "disc-grid" ||
-                      n == "disc-triangles" || n == "disc-box" || n == "warehouse";
+  const std::vector<std::string>& takes = infoOf(n).settings;
   const std::pair<bool, const char*> given[] = {
-      {r.tightness != 0 && n != "pacman", "tightness"},
-      {r.slackGiven && !slack, "slack"},
-      {r.robots != 0 && !robots, "robots"},
-      {r.obstacles != -1 && n != "random", "obstacles"},
-      {r.spacing != 0 && n != "disc-grid", "spacing"},
-      {r.mPartsOnly && n != "assembly-2", "m-parts-only"}};
+      {r.tightness != 0, "tightness"}, {r.slackGiven, "slack"},
+      {r.robots != 0, "robots"},       {r.obstacles != -1, "obstacles"},
+      {r.spacing != 0, "spacing"},     {r.mPartsOnly, "m-parts-only"}};
   for (const auto& [refused, setting] : given)
-    if (refused)
+    if (refused && std::find(takes.begin(), takes.end(), setting) == takes.end())
       throw InputError(prefix + setting + ": scenario " + n + " does not take it (mms scenario " +
                        "--help says which families take which settings)");
 }

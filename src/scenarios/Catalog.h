@@ -23,7 +23,18 @@ struct ScenarioRequest {
   std::vector<std::string> translate;
 };
 
-/// pacman, viking-helmet, random-polygons, assembly-1, ... in the order of the docs.
+/// A family of scenes: its name, what it is, and the settings it takes besides --seed.
+struct ScenarioInfo {
+  std::string name;
+  std::vector<std::string> settings;  // "tightness", "slack", "robots", "obstacles", ...
+  std::string summary;                // for mms scenario --help
+  bool seeded = true;                 // whether its scene depends on the seed
+};
+
+/// Every family, in the order of the docs.
+const std::vector<ScenarioInfo>& scenarios();
+
+/// pacman, viking-helmet, random-polygons, assembly-1, ... (scenarios()' names).
 const std::vector<std::string>& scenarioNames();
 
 /// The scene; throws InputError ("PREFIX" "SETTING: PROBLEM", e.g. "--slack: ...") on an unknown

@@ -306,6 +306,46 @@ TEST(CliInput, EveryNumericOptionRefusesNanAndInfinity) {
   EXPECT_GT(options, 30u);
 }
 
+// Help reads as text: wrapped to the terminal's width ($COLUMNS where there is no terminal),
+// types a person reads ("INT in [1, 2000]", not CLI11's "INT:INT in [1 - 2000]=1"), defaults
+// after the description, mms plan's options in groups and the scenario families one a line.
+TEST(CliInput, HelpIsWrappedGroupedAndReadsAsText) {
+  const std::vector<std::string> commands = {
+      "",      "validate", "check",  "render",      "plan",   "scenario", "assemble",
+      "bench", "view",     "import", "bench-merge", "export", "lab"};
+  const std::regex cli11Range(" in \\[[^\\]]* - "), typeEqualsDefault("[A-Z\\]]=\\S");
+  for (const std::string& command : commands)
+    for (const size_t width : {60, 100}) {
+      const test::Outcome r = test::runCommand("COLUMNS=" + std::to_string(width) + " " +
+                                               MMS_BINARY + " " + command + " --help");
+      ASSERT_EQ(r.code, 0) << command;
+      std::istringstream in(r.out);
+      for (std::string line; std::getline(in, line);)
+        EXPECT_LE(line.size(), width) << "mms " << command << " --help: " << line;
+      EXPECT_EQ(r.out.find("UINT:UINT"), std::string::npos) << command;
+      EXPECT_EQ(r.out.find(":{"), std::string::npos) << command;
+      EXPECT_FALSE(std::regex_search(r.out, cli11Range)) << command;
+      EXPECT_FALSE(std::regex_search(r.out, typeEqualsDefault)) << command;
+    }
+  const std::string plan = run("plan --help").out;
+  size_t at = 0;
+  for (const char* group :
+       {"\nPlanner:\n", "\nLimits:\n", "\nOutputs:\n",
+        "\nMMS (auto, mms, mms-ordered, mms-joint):\n", "\nThe default planner (auto):\n",
+        "\nEvery planner: the path optimiser:\n", "\nOMPL's planners:\n"}) {
+    const size_t here = plan.find(group);
+    ASSERT_NE(here, std::string::npos) << group << plan;
+    EXPECT_GT(here, at) << group;
+    at = here;
+  }
+  EXPECT_NE(plan.find("--time-limit NUMBER in [0.01, 1e+06]"), std::string::npos) << plan;
+  EXPECT_NE(plan.find("Seconds before giving up (default 60)"), std::string::npos) << plan;
+  const std::string scenario = run("scenario --help").out;
+  EXPECT_NE(scenario.find("\n" + std::string(32, ' ') + "keyhole (--seed, --slack): a key passes"),
+            std::string::npos)
+      << scenario;
+}
+
 // A parameter whose default differs between planners says each default with its planners
 // (--optimize is on for MMS's planners, off for OMPL's); one the planners share says one.
 TEST(CliInput, PlanHelpGivesEachPlannersDefault) {
