@@ -61,6 +61,9 @@ struct PlannerParams {
 struct PlanStatistics {
   double seconds = 0;  // planning time, as the planner measures it
   size_t rounds = 0;
+  /// MMS: the share (0 to 1) of its last round's growth targets met when it ended; the
+  /// default planner's allowance reads it (docs/planner.md, "The default: a portfolio").
+  double roundShare = 0;
   size_t graphNodes = 0, graphEdges = 0;         // roadmap or tree (OMPL: its states)
   size_t manifoldsBuilt = 0, manifoldsUsed = 0;  // MMS: slices and lines, built / on the path
   size_t pathCells = 0;                          // free-space cells on the graph path

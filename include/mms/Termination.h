@@ -21,6 +21,9 @@ class Termination {
     virtual void onCheck(Clock::time_point now) { (void)now; }
     /// `round`: the round begun, counted as the planner counts them (1 for its first).
     virtual void onRound(size_t round) { (void)round; }
+    /// `share`: how much of the current round's growth targets the planner has met (0 to 1),
+    /// after each step of growth.
+    virtual void onGrowth(double share) { (void)share; }
 
    protected:
     ~Watcher() = default;
@@ -54,6 +57,14 @@ class Termination {
     t.watcher_ = watcher;
     return t;
   }
+  /// This condition without the notes of growth within rounds (its watcher still hears of
+  /// checks and rounds): for a planner that runs other MMS planners in turn (many robots one at
+  /// a time), whose shares of their rounds are not shares of its own work.
+  Termination withoutGrowthNotes() const {
+    Termination t = *this;
+    t.growthNotes_ = false;
+    return t;
+  }
   /// A watcher may end the condition from onCheck (by setting `ended`): this check then holds.
   bool operator()() const {
     if (cancelled() || endedEarly()) return true;
@@ -68,6 +79,10 @@ class Termination {
   void noteRound(size_t round) const {
     if (watcher_) watcher_->onRound(round);
   }
+  /// An MMS planner has met `share` (0 to 1) of its current round's growth targets.
+  void noteGrowth(double share) const {
+    if (watcher_ && growthNotes_) watcher_->onGrowth(share);
+  }
   /// Seconds until the deadline (0 once passed, cancelled or ended), for budgets of sub-tasks.
   double secondsLeft() const {
     if (cancelled() || endedEarly()) return 0;
@@ -80,6 +95,7 @@ class Termination {
   const std::atomic<bool>* cancel_;
   const std::atomic<bool>* ended_ = nullptr;
   Watcher* watcher_ = nullptr;
+  bool growthNotes_ = true;
 };
 
 /// Thrown by checkpoint() once the termination condition of the enclosing StopScope holds.

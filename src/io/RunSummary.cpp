@@ -39,6 +39,7 @@ nlohmann::json toJson(const PlanStatistics& s, bool timings) {
   nlohmann::json j = {{"counts", nlohmann::json::object()}};
   scalars(s, [&](const char* name, const auto& v) { j[name] = v; });
   for (const auto& [name, n] : s.counts) j["counts"][name] = n;
+  if (s.rounds > 0) j["round_share"] = s.roundShare;
   if (!s.solvedBy.empty()) j["solved_by"] = s.solvedBy;
   if (!s.noPath.empty()) j["no_path"] = s.noPath;
   if (!timings) {
@@ -55,6 +56,7 @@ PlanStatistics statisticsFromJson(const nlohmann::json& j) {
   scalars(s, [&](const char* name, auto& v) { v = j.at(name).get<std::decay_t<decltype(v)>>(); });
   for (const auto& [name, n] : j.at("counts").items()) s.counts.emplace_back(name, n.get<size_t>());
   for (const auto& [name, t] : j.at("phases").items()) s.phases.emplace_back(name, t.get<double>());
+  s.roundShare = j.value("round_share", 0.0);
   s.solvedBy = j.value("solved_by", "");
   s.noPath = j.value("no_path", "");
   return s;

@@ -336,6 +336,7 @@ PlanStatus HeldRobotPlanner::runRoundsFrom(const Termination& stop,
   h.begin = [&] { beginStretch(); };
   h.growing = [&] { return growing(); };
   h.complete = [&] { return roundComplete(); };
+  h.share = [&] { return roundShare(); };
   h.grow = [&] {
     growStep(stop);
     if (sinceReport.seconds() >= 1.0) {

@@ -48,6 +48,7 @@ struct HeldRobotSettings {
 
 struct HeldRobotStats {
   size_t rounds = 0, subspaces = 0, crossEdges = 0, graphNodes = 0, graphEdges = 0;
+  double roundShare = 0;     // of the last round's targets met (PlanStatistics::roundShare)
   size_t screenedPoses = 0;  // held poses screened by an overlay (leavesRoom), in "overlays"
   size_t pathCells = 0, rejectedPaths = 0;
   size_t pathManifolds = 0, pathSubspaces = 0;  // of those built: slices + lines, subspaces
@@ -111,6 +112,7 @@ class HeldRobotPlanner {
   virtual void beginStretch() {}
   virtual bool growing() = 0;        // whether growth goes on in this stretch of the round
   virtual bool roundComplete() = 0;  // the round's targets are met
+  virtual double roundShare() = 0;   // how much of them (0 to 1)
   virtual void growStep(const Termination& stop) = 0;
   /// The next round's targets; `fixingsGrow`: the angle sets are large enough (anglesFirst).
   virtual void nextTargets(bool fixingsGrow) = 0;

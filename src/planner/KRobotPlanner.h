@@ -22,6 +22,7 @@
 // the lines of each subspace are uniform, so the reachable tuples' subspaces cover any
 // robust path's neighbourhood with probability going to 1; each step is exact, and every path
 // returned is certified.
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <utility>
@@ -73,6 +74,9 @@ class KRobotPlanner : public HeldRobotPlanner {
   void endsPlaced(const Termination& stop) override;
   bool growing() override;
   bool roundComplete() override { return grown_ >= grownAtRoundStart_ + target_; }
+  double roundShare() override {
+    return target_ == 0 ? 1 : std::min(1.0, double(grown_ - grownAtRoundStart_) / double(target_));
+  }
   void growStep(const Termination& stop) override;
   void nextTargets(bool fixingsGrow) override;
 

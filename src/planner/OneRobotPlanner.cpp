@@ -266,9 +266,19 @@ OneRobotResult OneRobotPlanner::solveRounds(
   // Slices and lines interleaved in the round's proportion, so that an early connection finds
   // few of either built (the angle sequence covers the circle evenly at every prefix). The
   // search runs as soon as start and goal connect: in open scenes a few dozen lines suffice.
+  size_t slicesAtRoundStart = sequenced(), linesAtRoundStart = lines().size();
   RoundHooks h;
   h.growing = [&] { return sequenced() < targetSlices || lines().size() < targetLines; };
   h.complete = [&] { return !h.growing(); };
+  // Slices and lines grow in proportion: the mean of their shares.
+  h.share = [&] {
+    auto share = [](size_t now, size_t from, size_t to) {
+      return to <= from ? 1.0 : std::min(1.0, double(now - from) / double(to - from));
+    };
+    return (share(sequenced(), slicesAtRoundStart, targetSlices) +
+            share(lines().size(), linesAtRoundStart, targetLines)) /
+           2;
+  };
   h.grow = [&] {
     if (!spinsAdded_) addSpinPlaces();
     // After two slices of the sequence: where those connect start and goal (open scenes, many
@@ -295,6 +305,7 @@ OneRobotResult OneRobotPlanner::solveRounds(
       stats_.noPath = noPathAlone(scene_, checker_, 0, start, goal);
       if (!stats_.noPath.empty()) return false;
     }
+    slicesAtRoundStart = sequenced(), linesAtRoundStart = lines().size();
     targetSlices *= 2;
     targetLines *= 2;
     return true;

@@ -82,6 +82,7 @@ struct OneRobotStats {
   SubspaceStats manifolds;  // slices, lines, their cells and build times
   size_t pivotLines = 0;    // of the lines: those turning about a pivot
   size_t rounds = 0, graphNodes = 0, graphEdges = 0;
+  double roundShare = 0;     // of the last round's targets met (PlanStatistics::roundShare)
   size_t pathCells = 0;      // FSCs on the graph path
   size_t pathManifolds = 0;  // the slices and lines they lie on (of slices + lines built)
   size_t rejectedPaths = 0;  // candidate motions the checker refused

@@ -276,8 +276,11 @@ bool OrderedPlanner::shuffle(const Termination& stop) {
   return true;
 }
 
-OrderedResult OrderedPlanner::solve(const Termination& stop,
+OrderedResult OrderedPlanner::solve(const Termination& outer,
                                     const std::function<void(const OrderedStats&)>& progress) {
+  // The planners it runs in turn pass their rounds on to a watcher (the default planner's
+  // allowance), not their growth within rounds, which is no share of this planner's work.
+  const Termination stop = outer.withoutGrowthNotes();
   const Stopwatch clock;
   OrderedResult result;
   q_ = startConfig(scene_);

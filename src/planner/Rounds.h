@@ -20,6 +20,7 @@ struct RoundHooks {
   std::function<bool()> growing;        // whether growth goes on in this stretch
   std::function<void()> grow;           // builds the next manifolds
   std::function<bool()> complete;       // the round's targets are met
+  std::function<double()> share;        // how much of them (0 to 1)
   std::function<CertifiedMotion(const std::vector<size_t>& nodes)> motion;
   std::function<void()> refused = [] {};  // after the checker refused a candidate
   std::function<void()> report = [] {};   // after each search
@@ -32,21 +33,33 @@ struct RoundsOutcome {
   CertifiedMotion motion;     // the last candidate (certified when Found)
 };
 
-/// `Stats` holds the counters every MMS planner reports: rounds, rejectedPaths and the
-/// seconds of search, motion and certify.
+/// `Stats` holds the counters every MMS planner reports: rounds, roundShare, rejectedPaths and
+/// the seconds of search, motion and certify. After each step of growth the round's share of
+/// its targets met goes to `stop`'s watcher (the default planner's allowance grows with it).
 template <class Stats>
 RoundsOutcome runRounds(const RoundHooks& h, Roadmap& roadmap, size_t from, size_t to,
                         const Termination& stop, Stats& stats) {
   RoundsOutcome out;
   // After a candidate the checker refused, the round is completed before the next search.
   bool searchEarly = true;
-  roadmap.beginRound(uint32_t(++stats.rounds));
-  stop.noteRound(stats.rounds);
+  auto noteShare = [&] {
+    stats.roundShare = h.share();
+    stop.noteGrowth(stats.roundShare);
+  };
+  auto beginRound = [&] {
+    roadmap.beginRound(uint32_t(++stats.rounds));
+    stats.roundShare = 0;
+    stop.noteRound(stats.rounds);
+  };
+  beginRound();
   while (true) {
     try {
       h.begin();
-      while (h.growing() && !stop() && !(searchEarly && roadmap.graph().connected(from, to)))
+      while (h.growing() && !stop() && !(searchEarly && roadmap.graph().connected(from, to))) {
         h.grow();
+        noteShare();
+      }
+      noteShare();
     } catch (const Stopped&) {
       // The limit struck inside a manifold: it is dropped, the search runs on the rest. No
       // round follows, so manifolds cut short never get out of step with the others.
@@ -81,8 +94,7 @@ RoundsOutcome runRounds(const RoundHooks& h, Roadmap& roadmap, size_t from, size
     }
     if (!h.next()) return out;
     searchEarly = true;
-    roadmap.beginRound(uint32_t(++stats.rounds));
-    stop.noteRound(stats.rounds);
+    beginRound();
   }
 }
 

@@ -34,6 +34,7 @@ bool TwoRobotPlanner::placeEnds(const Termination& stop) {
     goal[r] = {endPlacement(r, false), r, -1};
   }
   for (const Fixing& f : {start[0], start[1], goal[0], goal[1]}) addFixing(f, stop);
+  fixingsAtRoundStart_ = stats_.fixings;
   const long from = nodeFor(*subspaces_[1], start[0]), to = nodeFor(*subspaces_[3], goal[0]);
   if (from < 0 || to < 0) return false;
   from_ = from;
@@ -50,6 +51,16 @@ bool TwoRobotPlanner::roundComplete() {
   return stats_.fixings[0] >= target_ + 2 && stats_.fixings[1] >= target_ + 2;
 }
 
+// Each robot's share of its fixings to add this round, in the mean.
+double TwoRobotPlanner::roundShare() {
+  double share = 0;
+  for (size_t r = 0; r < 2; ++r) {
+    const size_t from = fixingsAtRoundStart_[r], to = target_ + 2;
+    share += to <= from ? 1 : std::min(1.0, double(stats_.fixings[r] - from) / double(to - from));
+  }
+  return share / 2;
+}
+
 void TwoRobotPlanner::growStep(const Termination& stop) {
   for (size_t r = 0; r < 2 && !stop(); ++r) {
     if (!wants(r)) continue;
@@ -59,6 +70,7 @@ void TwoRobotPlanner::growStep(const Termination& stop) {
 }
 
 void TwoRobotPlanner::nextTargets(bool fixingsGrow) {
+  fixingsAtRoundStart_ = stats_.fixings;
   if (fixingsGrow) target_ *= 2;
 }
 

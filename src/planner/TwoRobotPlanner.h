@@ -79,6 +79,7 @@ class TwoRobotPlanner : public HeldRobotPlanner, private FixingHost {
   void beginStretch() override { exhausted_ = {false, false}; }
   bool growing() override { return wants(0) || wants(1); }
   bool roundComplete() override;
+  double roundShare() override;
   void growStep(const Termination& stop) override;
   void nextTargets(bool fixingsGrow) override;
   void roundGrown(const Termination& stop) override;
@@ -121,6 +122,7 @@ class TwoRobotPlanner : public HeldRobotPlanner, private FixingHost {
   std::vector<std::unique_ptr<CompoundSubspace>> compounds_;  // the pair as one body, if close
   std::vector<Box> cellBoxes_;  // per slice-cell node: its bounding box
   size_t target_ = 0;           // fixings per robot this round, besides start and goal
+  std::array<size_t, 2> fixingsAtRoundStart_{0, 0};
   std::array<bool, 2> exhausted_{false, false};  // the sampler found no fixing this stretch
 };
 

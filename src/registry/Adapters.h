@@ -18,8 +18,12 @@ PlannerInfo jointPlannerInfo();
 inline constexpr size_t kOrderedFrom = 8;
 /// Whether "mms" takes the scene (one robot or more).
 bool mmsTakes(const Scene& scene);
-/// "auto": MMS and a sampling planner racing, the first certified path winning.
+/// "auto": MMS and a sampling planner on two cores: the sampler's path when it finds one within
+/// its allowance (samplerAllowance), MMS's otherwise.
 PlannerInfo portfolioPlannerInfo();
+/// The portfolio's sampler's iterations allowed once MMS has begun `rounds` rounds after its
+/// first and met `share` (0 to 1) of the last one's targets: `budget` x 2^(rounds + share).
+double samplerAllowance(size_t budget, size_t rounds, double share);
 /// OMPL 1.5.2's planners with mms's collision checker and continuous certification.
 std::vector<PlannerInfo> omplPlannerInfos();
 

@@ -29,6 +29,7 @@ PlanStatistics commonStatistics(const Stats& s, const SubspaceStats& m,
   PlanStatistics p;
   p.seconds = s.totalSeconds;
   p.rounds = s.rounds;
+  p.roundShare = s.roundShare;
   p.graphNodes = s.graphNodes;
   p.graphEdges = s.graphEdges;
   p.manifoldsBuilt = m.slices + m.lines;

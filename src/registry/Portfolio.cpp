@@ -4,11 +4,13 @@
 // orders of magnitude.
 //
 // Determinism: the sampler's path is taken when it finds one within its allowance of iterations,
-// and MMS's otherwise. The allowance is a budget that doubles with each round MMS begins (MMS
-// doubles its manifolds each round): the sampler runs while MMS works, so that scenes where MMS
-// struggles (many robots nearly filling a room) still get the sampler's path, however many
-// iterations it needs. Each member is deterministic for its seed and the allowance is counted in
-// iterations and rounds, not timed, so which member's path is returned does not depend on the
+// and MMS's otherwise. The allowance is a budget that doubles with each round MMS grows through,
+// counted in shares of the round's targets (MMS doubles its manifolds each round): the sampler
+// runs while MMS works, so that scenes where MMS struggles (many robots nearly filling a room)
+// still get the sampler's path, however many iterations it needs. Each member is deterministic
+// for its seed and the allowance is counted in iterations and MMS's growth, not timed: MMS's
+// growth when it ends fixes the last allowance, so which member's path is returned does not
+// depend on the
 // machine's load; the clock only decides how soon (docs/planner.md, "The default: a
 // portfolio"). The portfolio returns a member's path unchanged, naming it
 // (PlanStatistics::solvedBy).
@@ -51,8 +53,8 @@ std::map<std::string, double> samplerSettings(const Scene& scene) {
 /// How long the sampler runs alone before MMS starts: on open scenes it is then often done,
 /// and no second thread is paid for (docs/planner.md, "The default: a portfolio").
 constexpr std::chrono::milliseconds kHeadStart{2};
-/// The sampler's iterations by default while MMS is in its first round, doubled at each round
-/// MMS begins: its path is taken when it finds one within them.
+/// The sampler's iterations by default when MMS begins its first round, doubled for each round
+/// MMS grows through (samplerAllowance): its path is taken when it finds one within them.
 constexpr double kSamplerIterations = 2000;
 /// How often a sampler waiting for MMS's next round looks at the caller's limits.
 constexpr std::chrono::milliseconds kWaitStep{5};
@@ -120,7 +122,7 @@ class CoresApart {
 /// run for the head start: the sampler tells it of each check of its termination condition (one
 /// per iteration), and the first check past the head start makes MMS and starts it on a thread
 /// of its own. The same checks, counted, hold the sampler once they pass its allowance (the
-/// budget, doubled for each round MMS has begun after its first) until MMS begins another round,
+/// budget, doubled for each round MMS has grown through) until MMS grows further,
 /// and end it if MMS finishes first (with its path, or a proof that none exists). MMS finishing
 /// does not end the sampler within its allowance, so that the sampler's path within it wins whoever
 /// was faster; MMS failing (throwing) leaves the sampler unbounded. On open scenes the sampler is
@@ -217,10 +219,11 @@ class Challenger final : public Termination::Watcher {
       ended_ = true;
     }
   }
-  /// Tells the challenger of the rounds MMS begins, on MMS's thread.
+  /// Tells the challenger of the rounds MMS begins and of its growth in each, on MMS's thread.
   struct Rounds final : Termination::Watcher {
     explicit Rounds(Challenger& c) : challenger(c) {}
     void onRound(size_t round) override { challenger.roundBegun(round); }
+    void onGrowth(double share) override { challenger.grown(share); }
     Challenger& challenger;
   };
   /// `round` as the MMS planner counts them: after earlier queries, its first in this one may
@@ -229,17 +232,25 @@ class Challenger final : public Termination::Watcher {
     {
       const std::lock_guard lock(doneMutex_);
       if (firstRound_ == 0) firstRound_ = round;
-      lastRound_ = std::max(lastRound_, round);
+      if (round > lastRound_) lastRound_ = round, share_ = 0;
     }
     doneChanged_.notify_all();
   }
-  /// The sampler's iterations now allowed: the budget, doubled for each round MMS has begun
-  /// after its first.
-  double allowanceLocked() const {
-    const size_t doublings = firstRound_ == 0 ? 0 : lastRound_ - firstRound_;
-    return std::ldexp(double(budget_), int(std::min<size_t>(doublings, 1000)));
+  /// MMS has met `share` of its round's targets; never less than before within the round.
+  void grown(double share) {
+    {
+      const std::lock_guard lock(doneMutex_);
+      share_ = std::max(share_, std::clamp(share, 0.0, 1.0));
+    }
+    doneChanged_.notify_all();
   }
-  /// The sampler past its allowance: waits for MMS's next round. MMS done ends the sampler (its
+  /// The sampler's iterations now allowed: the budget, doubled for each round MMS has grown
+  /// through, counted in shares of the round's targets (kSamplerAllowance).
+  double allowanceLocked() const {
+    return firstRound_ == 0 ? double(budget_)
+                            : samplerAllowance(budget_, lastRound_ - firstRound_, share_);
+  }
+  /// The sampler past its allowance: waits for MMS to grow further. MMS done ends the sampler (its
   /// path, or its proof that none exists, is the answer); MMS failing lets it run on unbounded,
   /// as does an MMS that could not start.
   void awaitAllowance() {
@@ -329,10 +340,22 @@ class Challenger final : public Termination::Watcher {
   std::condition_variable doneChanged_;
   bool done_ = false;
   size_t firstRound_ = 0, lastRound_ = 0;  // of MMS in this query; 0: none begun
+  double share_ = 0;                       // of MMS's targets in its last round
   CoresApart cores_;
   PlanResult own_;
   std::exception_ptr failure_;
 };
+
+}  // namespace
+
+// Doubled per round, and within a round as its growth goes (MMS's own manifolds double per
+// round): the sampler need not wait for the end of a long round, and where MMS has its path
+// early in a round the sampler's allowance has grown by little.
+double samplerAllowance(size_t budget, size_t rounds, double share) {
+  return std::ldexp(double(budget) * std::exp2(share), int(std::min<size_t>(rounds, 1000)));
+}
+
+namespace {
 
 /// The sampler's budget, declared once for the command line, benchmarks and docs.
 const ParamSpec& samplerIterations() {
@@ -343,8 +366,9 @@ const ParamSpec& samplerIterations() {
       1e9,
       kSamplerIterations,
       std::string("Iterations of ") + kSampler +
-          " beside MMS while MMS is in its first round, doubled at each round MMS begins: its "
-          "path is taken when it finds one within them, MMS's otherwise, so the same seed gives "
+          " beside MMS as MMS begins, doubled for each round MMS grows through (counted in "
+          "shares of its round's targets): its path is taken when it finds one within them, "
+          "MMS's otherwise, so the same seed gives "
           "the same path whatever the load; 0: MMS alone (default " +
           formatNumber(kSamplerIterations) + ")"};
   return spec;
@@ -438,8 +462,8 @@ PlannerInfo portfolioPlannerInfo() {
   info.name = "auto";
   info.summary = std::string("MMS and OMPL's ") + kSampler +
                  " (certified motions, free samples) on two cores; the sampler's certified path "
-                 "if it finds one within its iterations (--sampler-iterations, doubled at each "
-                 "round MMS begins), else MMS's (the statistics name it). "
+                 "if it finds one within its iterations (--sampler-iterations, doubled for each "
+                 "round MMS grows through), else MMS's (the statistics name it). "
                  "Scenes MMS does not take go to the sampler alone; with a roadmap picture asked "
                  "for (one robot), MMS runs alone";
   info.params = mms.params;

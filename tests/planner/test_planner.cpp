@@ -15,6 +15,7 @@
 #include "manifolds/Pivot.h"
 #include "path/Optimize.h"
 #include "planner/OneRobotPlanner.h"
+#include "registry/Adapters.h"
 #include "scenarios/Generators.h"
 
 using namespace mms;
@@ -132,9 +133,10 @@ nlohmann::json statisticsOf(const std::string& pathFile) {
 
 // The default planner takes its sampler's path when the sampler, run alone with the same seed,
 // finds one within its allowance (the budget of iterations, doubled for each round MMS alone
-// begins after its first), and MMS's otherwise: on the allowance's edge, and on close races
-// (the first path found had won them, and a keyhole or discs' swap went either way). The rule
-// counts iterations and rounds, so neither the member nor the file changes when the machine is
+// grows through: the rounds it begins after its first, and the share of its last round's
+// targets it met), and MMS's otherwise: on the allowance's edge, and on close races (the first
+// path found had won them, and a keyhole or discs' swap went either way). The rule counts
+// iterations and growth, so neither the member nor the file changes when the machine is
 // loaded: planned idle, then squeezed onto one core beside two spinning threads.
 TEST(Plan, DefaultPlannerSamePathFileUnderLoad) {
   TempDir dir;
@@ -150,6 +152,7 @@ TEST(Plan, DefaultPlannerSamePathFileUnderLoad) {
   std::vector<std::string> files, idle;
   std::vector<size_t> alone;   // the sampler's iterations to its path, alone
   std::vector<size_t> rounds;  // the rounds MMS alone begins
+  std::vector<double> share;   // of its last round's targets met
   for (const auto& [family, seed] : scenes) {
     files.push_back(dir.path(family + "-" + seed + ".json"));
     ASSERT_EQ(runMms("scenario " + family + " --seed " + seed + " -o " + quote(files.back())).code,
@@ -161,20 +164,21 @@ TEST(Plan, DefaultPlannerSamePathFileUnderLoad) {
              "--planner rrtconnect --certified-motions --free-samples --lean-angles 0.5" + shorter,
              "sampler.json"));
     alone.push_back(sampler["counts"]["iterations"].get<size_t>());
-    rounds.push_back(
-        statisticsOf(plan(files.back(), "--planner mms", "mms.json"))["rounds"].get<size_t>());
+    const nlohmann::json mms = statisticsOf(plan(files.back(), "--planner mms", "mms.json"));
+    rounds.push_back(mms["rounds"].get<size_t>());
+    share.push_back(mms["round_share"].get<double>());
     ASSERT_GE(rounds.back(), 1u);
-    const size_t allowance = size_t(2000) << (rounds.back() - 1);
+    const double allowance = samplerAllowance(2000, rounds.back() - 1, share.back());
     idle.push_back(plan(files.back(), "", family + seed + "-idle.json"));
     EXPECT_EQ(statisticsOf(idle.back())["solved_by"],
-              alone.back() <= allowance ? "rrtconnect" : "mms")
+              double(alone.back()) <= allowance ? "rrtconnect" : "mms")
         << files.back() << ": the sampler alone took " << alone.back() << " iterations, MMS "
-        << rounds.back() << " rounds";
+        << rounds.back() << " rounds, " << share.back() << " of the last";
   }
-  // The allowance's edge, exactly: the least budget that doubled for MMS's rounds covers the
+  // The allowance's edge, exactly: the least budget that, doubled for MMS's growth, covers the
   // sampler's iterations.
-  const size_t doubled = size_t(1) << (rounds.back() - 1);
-  const size_t edge = (alone.back() + doubled - 1) / doubled;
+  size_t edge = 1;
+  while (samplerAllowance(edge, rounds.back() - 1, share.back()) < double(alone.back())) ++edge;
   EXPECT_EQ(statisticsOf(plan(files.back(), "--sampler-iterations " + std::to_string(edge),
                               "edge.json"))["solved_by"],
             "rrtconnect");

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <string>
+#include <vector>
 
 #include "graph/Roadmap.h"
 #include "planner/Rounds.h"
@@ -13,6 +15,7 @@ namespace {
 
 struct LoopStats {
   size_t rounds = 0, rejectedPaths = 0;
+  double roundShare = 0;
   double searchSeconds = 0, motionSeconds = 0, certifySeconds = 0;
 };
 
@@ -50,6 +53,8 @@ TEST(Rounds, SearchEarlyCompleteTheRoundAfterARefusalThenDouble) {
   RoundHooks h;
   h.growing = [&] { return built < target; };
   h.complete = [&] { return built >= target; };
+  size_t builtAtRoundStart = 0;
+  h.share = [&] { return double(built - builtAtRoundStart) / double(target - builtAtRoundStart); };
   h.grow = [&] {
     if (built < 5) g.addEdge(built, built + 1);
     ++built;
@@ -63,11 +68,19 @@ TEST(Rounds, SearchEarlyCompleteTheRoundAfterARefusalThenDouble) {
   };
   h.refused = [&] { ++refusals; };
   h.next = [&] {
+    builtAtRoundStart = built;
     target *= 2;
     return true;
   };
+  // What a watcher of the condition hears: each round begun, and after each step of growth
+  // the share of the round's targets met.
+  struct Heard final : Termination::Watcher {
+    void onRound(size_t round) override { events.push_back("round " + std::to_string(round)); }
+    void onGrowth(double share) override { events.push_back(std::to_string(share).substr(0, 4)); }
+    std::vector<std::string> events;
+  } heard;
   LoopStats stats;
-  const RoundsOutcome o = runRounds(h, g, 0, 5, Termination(10), stats);
+  const RoundsOutcome o = runRounds(h, g, 0, 5, Termination(10).watchedBy(&heard), stats);
   ASSERT_EQ(o.end, RoundsOutcome::End::Found);
   EXPECT_EQ(o.nodes, (std::vector<size_t>{0, 1, 2, 3, 4, 5}));
   // Rounds of 2, 4, 8: connected after 5 manifolds (round 3), refused, the round completed to
@@ -76,6 +89,11 @@ TEST(Rounds, SearchEarlyCompleteTheRoundAfterARefusalThenDouble) {
   EXPECT_EQ(stats.rounds, 3u);
   EXPECT_EQ(stats.rejectedPaths, 1u);
   EXPECT_EQ(refusals, 1u);
+  // Round 3 grows 4 -> 8: connected at 5 (a quarter), completed to 8 after the refusal.
+  EXPECT_EQ(heard.events, (std::vector<std::string>{"round 1", "0.50", "1.00", "1.00", "round 2",
+                                                    "0.50", "1.00", "1.00", "round 3", "0.25",
+                                                    "0.25", "0.50", "0.75", "1.00", "1.00"}));
+  EXPECT_EQ(stats.roundShare, 1.0);
 }
 
 TEST(Rounds, GiveUpAndStop) {
@@ -84,6 +102,7 @@ TEST(Rounds, GiveUpAndStop) {
   RoundHooks h;
   h.growing = [&] { return built < target; };
   h.complete = [&] { return built >= target; };
+  h.share = [] { return 0.0; };
   h.grow = [&] { ++built; };
   h.motion = [](const std::vector<size_t>&) { return CertifiedMotion{}; };
   h.next = [&] {
