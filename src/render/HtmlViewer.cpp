@@ -17,15 +17,19 @@ const S = (W - 2 * PAD) / (B[2] - B[0]);
 const H = Math.round((B[3] - B[1]) * S + 2 * PAD);
 const cv = document.getElementById('view');
 cv.width = W; cv.height = H;
-// The picture fills the window, as large as fits beside the controls, and follows it when it
-// is resized (the drawing is scaled, not redrawn).
-// #fit=0 keeps the drawing at its own size (pixel checks, screenshots of a given scale).
+// The picture fills the window above the sliders (the motion's, its caption, and the
+// planning's with a record), beside the 3-D view when that is open, and follows the window when it is resized
+// (the drawing is scaled, not redrawn); what else the page holds (the legend, the phases)
+// scrolls below. #fit=0 keeps the drawing at its own size (pixel checks, screenshots of a
+// given scale).
 function fit() {
   if (new URLSearchParams(location.hash.slice(1)).get('fit') === '0') {
     cv.style.width = W + 'px'; cv.style.height = H + 'px'; return;
   }
-  const below = document.body.scrollHeight - cv.offsetHeight;
-  const k = Math.max(0.1, Math.min(window.innerWidth / W, (window.innerHeight - below) / H));
+  const bars = ['controls', 'caption', 'record'].map(id => document.getElementById(id))
+      .reduce((a, e) => a + (e ? e.offsetHeight : 0), 0);
+  const beside = typeof cspaceBeside === 'function' ? cspaceBeside() : 0;
+  const k = Math.max(0.1, Math.min((window.innerWidth - beside) / W, (window.innerHeight - bars - 4) / H));
   cv.style.width = Math.floor(W * k) + 'px'; cv.style.height = Math.floor(H * k) + 'px';
 }
 window.addEventListener('resize', fit);
@@ -135,6 +139,8 @@ function drawStill() {
 }
 function draw() {
   const f = ui.slider.value / 1000;
+  // A record's layer may follow the motion (the slice nearest the robot's angle now).
+  if (typeof recordMoment === 'function' && recordMoment(f)) drawStill();
   g.drawImage(still, 0, 0);
   const q = configAt(f);
   if (q) for (let k = 0; k < N; ++k) {
@@ -269,7 +275,10 @@ std::string renderHtmlViewer(const Scene& scene, const Path* path, const RecordF
   html +=
       "<style>body{margin:0;font:13px sans-serif;color:#222}canvas{display:block}"
       "#controls{padding:8px 10px;display:flex;gap:12px;align-items:center;flex-wrap:wrap}"
-      "#time{width:340px}</style>\n</head>\n<body>\n<canvas id=\"view\"></canvas>\n"
+      "#time{width:340px}#stage{display:flex;flex-wrap:wrap;align-items:flex-start;gap:4px}"
+      "</style>\n</head>\n<body>\n<div id=\"stage\"><canvas id=\"view\"></canvas>" +
+      (record ? cspaceStage(*record) : std::string()) +
+      "</div>\n"
       "<div id=\"controls\"><button id=\"play\">Play</button>"
       "<input id=\"time\" type=\"range\" min=\"0\" max=\"1000\" value=\"0\" "
       "aria-label=\"time\"><span id=\"label\"></span>"
@@ -278,7 +287,7 @@ std::string renderHtmlViewer(const Scene& scene, const Path* path, const RecordF
       "<option value=\"2\">2x</option><option value=\"4\">4x</option></select></label>"
       "<label><input id=\"traces\" type=\"checkbox\" checked> traces</label>"
       "<label><input id=\"roadmap\" type=\"checkbox\"> free-space cells and lines</label>"
-      "</div>\n<p style=\"padding:0 10px\">";
+      "</div>\n<p id=\"caption\" style=\"padding:0 10px\">";
   html += escapeMarkup(title) +
           ": obstacles blue, robots green at the start and red at the goal (outlines). "
           "Link to a moment with #t=0.5, to a robot with #robot=NAME.</p>\n";

@@ -31,6 +31,26 @@ const angles = [];
 R.manifolds.forEach(m => { if (isSlice(m) && angles.indexOf(m.theta) < 0) angles.push(m.theta); });
 angles.sort((a, b) => a - b);
 angles.forEach((a, i) => { const o = document.createElement('option'); o.value = i; o.textContent = a.toFixed(4) + ' rad'; rui.angle.appendChild(o); });
+// The slice angle nearest `theta`, round the circle.
+const turnApart = (a, b) => { const d = Math.abs(a - b) % (2 * Math.PI); return Math.min(d, 2 * Math.PI - d); };
+function nearestAngle(theta) {
+  let best = -1;
+  angles.forEach((a, i) => { if (best < 0 || turnApart(a, theta) < turnApart(angles[best], theta)) best = i; });
+  return best;
+}
+// One robot: by default the slice nearest its angle at the motion's moment (every angle at once
+// stacks hundreds of slices into one wash).
+let nearAngle = -1;
+function robotAngleAt(f) { const q = configAt(f); return q ? q[2] : D.robots[0].start[2]; }
+function recordMoment(f) {
+  if (rui.angle.value !== 'near') return false;
+  const a = nearestAngle(robotAngleAt(f));
+  if (a === nearAngle) return false;
+  nearAngle = a;
+  return true;
+}
+if (D.robots.length !== 1) rui.angle.querySelector('option[value="near"]').remove();
+else nearAngle = nearestAngle(robotAngleAt(ui.slider.value / 1000));
 R.subspaces.forEach((s, i) => {
   const o = document.createElement('option'); o.value = i;
   const held = s.held.map(h => D.robots[h[0]].name + ' at (' + h[1].toFixed(2) + ', ' + h[2].toFixed(2) + ')').join(', ');
@@ -48,11 +68,13 @@ function componentColour(m, t, alpha) {
   const c = s && g ? '106, 27, 154' : s ? '46, 125, 50' : g ? '198, 40, 40' : '110, 110, 110';
   return 'rgba(' + c + ', ' + alpha + ')';
 }
-function shown(m, t) {
+// `stack`: every angle unless one is chosen (the 3-D view stacks the slices by angle).
+function shown(m, t, stack) {
   if (m.at > t) return false;
   if (rui.sub.value !== 'all' && m.subspace !== Number(rui.sub.value)) return false;
-  if (isSlice(m) && rui.angle.value !== 'all' && m.theta !== angles[Number(rui.angle.value)]) return false;
-  return true;
+  if (!isSlice(m) || rui.angle.value === 'all') return true;
+  if (rui.angle.value === 'near') return stack || m.theta === angles[nearAngle];
+  return m.theta === angles[Number(rui.angle.value)];
 }
 function flatPath(ctx, flat) {
   for (let i = 0; i < flat.length; i += 2) {
@@ -101,6 +123,7 @@ function drawHeld(s) {
   sub.held.forEach(h => { robotPath(s, h[0], [h[1], h[2], h[3]]); s.stroke(); });
   s.setLineDash([]);
 }
+let cspaceShown = '';  // what the 3-D view was last built for
 function drawRecord(s) {
   const t = planningTime();
   if (rui.cells.checked) drawCells(s, t);
@@ -108,7 +131,9 @@ function drawRecord(s) {
   if (rui.tree.checked) drawTree(s, t);
   drawHeld(s);
   describe(t);
-  if (window.buildCspace) buildCspace(t);
+  // The 3-D view stacks every angle: the motion's moment does not change it.
+  const key = [t, rui.cells.checked, rui.lines.checked, rui.sub.value, rui.angle.value === 'near' ? '' : rui.angle.value].join();
+  if (window.buildCspace && key !== cspaceShown) { cspaceShown = key; buildCspace(t); }
 }
 // How many of each kind existed at t, by the growth samples (kept from every stamp).
 function builtBy(t) {
@@ -128,22 +153,34 @@ function describe(t) {
   R.searches.forEach(x => { if (x.at <= t) { round = Math.max(round, x.round); if (x.connected) connected = true; } });
   let text = 'planning t = ' + t.toFixed(3) + ' s of ' + RT.toFixed(3) + ' s (' + R.planner + ')';
   if (slices + lines) text += ' · ' + slices + ' slices, ' + lines + ' lines · round ' + round + (connected ? ' · start and goal connected' : '');
+  const one = rui.angle.value === 'near' ? nearAngle : rui.angle.value === 'all' ? -1 : Number(rui.angle.value);
+  if (one >= 0) text += ' · cells of the slice at ' + angles[one].toFixed(3) + ' rad' + (rui.angle.value === 'near' ? ', nearest the robot\'s angle now' : '');
   if (n.states !== undefined) text += ' · ' + n.states + ' states';
   const kept = R.manifolds.length + tree.states.length, all = (tree.total_states || 0) + (GN ? Object.keys(G.counts).filter(k => k !== 'states').reduce((a, k) => a + G.counts[k][GN - 1], 0) : 0);
   if (kept < all) text += ' (' + drawn + ' of them drawn: the record keeps every k-th)';
   rui.label.textContent = text;
   drawGrowth(t);
 }
-// Manifolds (or a tree's states) against time, and where the slider is.
+// Manifolds (or a tree's states) against time, with its axes, and where the slider is.
 function drawGrowth(t) {
   const c = rui.growth.getContext('2d'), w = rui.growth.width, h = rui.growth.height;
+  const L = 46, R = 10, T = 16, Bm = 18, pw = w - L - R, ph = h - T - Bm;
   c.fillStyle = '#ffffff'; c.fillRect(0, 0, w, h);
   const kinds = Object.keys(G.counts), total = i => kinds.reduce((a, k) => a + G.counts[k][i], 0);
   const most = Math.max(1, GN ? total(GN - 1) : 0);
+  const X = s => L + s / RT * pw, Y = n => T + ph - n / most * ph;
+  c.strokeStyle = '#555555'; c.lineWidth = 1; c.beginPath();
+  c.moveTo(L, T); c.lineTo(L, T + ph); c.lineTo(L + pw, T + ph); c.stroke();
+  c.fillStyle = '#333333'; c.font = '11px sans-serif';
+  c.textAlign = 'left'; c.fillText(kinds.length === 1 && kinds[0] === 'states' ? 'states' : 'manifolds built', L, T - 4);
+  c.textAlign = 'right'; c.fillText(String(most), L - 4, T + 8); c.fillText('0', L - 4, T + ph);
+  c.textAlign = 'left'; c.fillText('0 s', L, h - 4);
+  c.textAlign = 'right'; c.fillText(RT.toPrecision(3) + ' s', L + pw, h - 4);
   c.strokeStyle = '#3f6fb5'; c.lineWidth = 1.5; c.beginPath();
-  for (let i = 0; i < GN; ++i) { const x = G.at[i] / RT * (w - 2) + 1, y = h - 1 - total(i) / most * (h - 2); i ? c.lineTo(x, y) : c.moveTo(x, y); }
+  for (let i = 0; i < GN; ++i) i ? c.lineTo(X(G.at[i]), Y(total(i))) : c.moveTo(X(G.at[i]), Y(total(i)));
   c.stroke();
-  c.strokeStyle = '#c62828'; c.beginPath(); c.moveTo(t / RT * (w - 2) + 1, 0); c.lineTo(t / RT * (w - 2) + 1, h); c.stroke();
+  c.strokeStyle = '#c62828'; c.beginPath(); c.moveTo(X(t), T); c.lineTo(X(t), T + ph); c.stroke();
+  rui.growth.dataset.axes = '0 to ' + most + ' over 0 to ' + RT.toPrecision(3) + ' s';
 }
 function recordFromHash() {
   const h = new URLSearchParams(location.hash.slice(1));
@@ -153,10 +190,16 @@ function recordFromHash() {
     ['cells', 'lines', 'tree', 'path'].forEach(l => { rui[l].checked = on.indexOf(l) >= 0; });
   }
   if (h.has('sub')) rui.sub.value = h.get('sub');
-  if (h.has('angle')) rui.angle.value = h.get('angle');
+  if (h.has('angle')) {
+    const a = h.get('angle');
+    if (a === 'all' || (a === 'near' && D.robots.length === 1)) rui.angle.value = a;
+    else if (angles.length && a !== '' && isFinite(Number(a))) rui.angle.value = nearestAngle(Number(a));
+    nearAngle = -1; recordMoment(ui.slider.value / 1000);
+  }
   if (h.has('rrobot')) rui.robot.value = h.get('rrobot');
   drawStill(); draw();
 }
+rui.angle.addEventListener('change', () => { nearAngle = -1; recordMoment(ui.slider.value / 1000); });
 [rui.time, rui.cells, rui.lines, rui.tree, rui.path, rui.sub, rui.angle, rui.robot].forEach(e => {
   e.addEventListener('input', () => { drawStill(); draw(); });
   e.addEventListener('change', () => { drawStill(); draw(); });
@@ -178,15 +221,29 @@ const char* kCspaceScript = R"JS(
   const V = (x, y, th) => new THREE.Vector3((x - cx) * k, (y - cy) * k, th / PI);
   let renderer = null, scene3, camera, group = null;
   const h = new URLSearchParams(location.hash.slice(1));
+  // A square beside the scene's picture, a good part of the window's width; below it where the
+  // window is too narrow for both (the page then scrolls to it).
+  const side = () => Math.round(Math.min(600, Math.max(240, 0.42 * window.innerWidth)));
+  const besideFits = () => window.innerWidth >= 700;
+  window.cspaceBeside = () => (on.checked && besideFits() ? side() + 4 : 0);
+  function resize() {
+    if (!renderer) return;
+    renderer.setSize(side(), side());
+    renderer.render(scene3, camera);
+  }
   function init() {
     try {
       renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
     } catch (e) { note.textContent = '3-D view: no WebGL in this browser'; return false; }
-    renderer.setSize(W, 500); renderer.setClearColor(0xffffff);
+    renderer.setSize(side(), side()); renderer.setClearColor(0xffffff);
     box.appendChild(renderer.domElement);
     scene3 = new THREE.Scene();
-    camera = new THREE.PerspectiveCamera(40, W / 500, 0.01, 100);
-    camera.up.set(0, 0, 1); camera.position.set(1.6, -2.9, 1.6); camera.lookAt(0, 0, 0);
+    // Far enough that the whole box (x, y and the angle in [-1, 1]) is in view: its bounding
+    // sphere, sqrt(3), within half the field of view (20 degrees), and a margin.
+    camera = new THREE.PerspectiveCamera(40, 1, 0.01, 100);
+    const away = new THREE.Vector3(1.6, -2.9, 1.6).normalize().multiplyScalar(1.08 * Math.sqrt(3) / Math.sin(PI / 9));
+    camera.up.set(0, 0, 1); camera.position.copy(away); camera.lookAt(0, 0, 0);
+    window.addEventListener('resize', resize);
     const controls = new THREE.OrbitControls(camera, renderer.domElement);
     controls.addEventListener('change', () => renderer.render(scene3, camera));
     // The frame: the bounds at -pi and pi, and the obstacles at the bottom.
@@ -204,15 +261,17 @@ const char* kCspaceScript = R"JS(
   }
   function shape(ring) { return ring.reduce((a, v, i) => { if (i % 2) a.push(new THREE.Vector2((ring[i - 1] - cx) * k, (v - cy) * k)); return a; }, []); }
   function build(t) {
-    if (!on.checked) { box.style.display = 'none'; return; }
-    box.style.display = 'block';
+    const was = box.style.display;
+    box.style.display = on.checked ? 'block' : 'none';
+    if (was !== box.style.display) fit();  // the scene's picture makes room, or takes it back
+    if (!on.checked) return;
     if (!renderer && !init()) return;
     if (group) { scene3.remove(group); group.traverse(o => { if (o.geometry) o.geometry.dispose(); if (o.material) o.material.dispose(); }); }
     group = new THREE.Group();
     let slices = 0, arcs = 0;
     const pts = [], cols = [];
     R.manifolds.forEach(m => {
-      if (!shown(m, t)) return;
+      if (!shown(m, t, true)) return;
       const c = new THREE.Color(componentColour(m, t, 1).replace('rgba', 'rgb').replace(/, [0-9.]+\)$/, ')'));
       if (isSlice(m)) {
         if (!rui.cells.checked) return;
@@ -258,8 +317,8 @@ const char* kCspaceScript = R"JS(
   }
   // #ink=1: the pixels the 3-D view drew (not white), read back from WebGL, for tests.
   function ink() {
-    const gl = renderer.getContext(), px = new Uint8Array(W * 500 * 4);
-    gl.readPixels(0, 0, W, 500, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    const n2 = side(), gl = renderer.getContext(), px = new Uint8Array(n2 * n2 * 4);
+    gl.readPixels(0, 0, n2, n2, gl.RGBA, gl.UNSIGNED_BYTE, px);
     let n = 0;
     for (let i = 0; i < px.length; i += 4) if (px[i] < 245 || px[i + 1] < 245 || px[i + 2] < 245) ++n;
     return n;
@@ -288,17 +347,25 @@ std::string recordControls(const RecordFile& record) {
           box("ltree", "tree or graph", tree) + box("lpath", "the path's manifolds", manifolds);
   html +=
       "<label>subspace <select id=\"rsub\"><option value=\"all\">all</option></select></label>"
-      "<label>slices at <select id=\"rangle\"><option value=\"all\">every angle</option>"
-      "</select></label><label>tree of <select id=\"rrobot\"></select></label>"
-      "<canvas id=\"rgrowth\" width=\"240\" height=\"40\" title=\"built against time\"></canvas>"
-      "</div>\n<p id=\"rlabel\" style=\"padding:0 10px\"></p>\n";
+      "<label>slices at <select id=\"rangle\"><option value=\"near\" selected>the robot's "
+      "angle now</option><option value=\"all\">every angle</option></select></label>"
+      "<label>tree of <select id=\"rrobot\"></select></label>";
   if (record.record.robots == 1 && manifolds)
     html +=
-        "<div style=\"padding:0 10px\"><label><input id=\"lcspace\" type=\"checkbox\"> 3-D "
-        "C-space</label> <span id=\"cspace-note\"></span></div><div id=\"cspace\" "
-        "style=\"display:none\"></div>\n";
+        "<label><input id=\"lcspace\" type=\"checkbox\"> 3-D C-space</label> <span "
+        "id=\"cspace-note\"></span>";
+  html +=
+      "</div>\n<p id=\"rlabel\" style=\"padding:0 10px\"></p>\n<canvas id=\"rgrowth\" "
+      "width=\"360\" height=\"110\" style=\"margin:0 10px\" title=\"built against "
+      "time\"></canvas>\n";
   html += "<div id=\"rphases\" style=\"padding:0 10px\">" + phaseChart(record.stats) + "</div>\n";
   return html;
+}
+
+std::string cspaceStage(const RecordFile& record) {
+  return record.record.robots == 1 && !record.record.manifolds.empty()
+             ? "<div id=\"cspace\" style=\"display:none\"></div>"
+             : "";
 }
 
 std::string phaseChart(const PlanStatistics& stats) {

@@ -1,6 +1,8 @@
 // SVG pictures: well-formed, drawn where the scene says, readable by a standard renderer.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <set>
 
 #include "Support.h"
@@ -112,13 +114,37 @@ TEST(Render, EachRobotHasItsColourAndItsNameInALegend) {
   EXPECT_EQ(renderHtmlViewer(one, nullptr).find("id=\"legend\""), std::string::npos);
 }
 
+// A fleet keeps its robots apart by colour: none repeats among the first 2000 (in a scene of 20
+// discs two pairs once shared one), and the first 64 stay as far apart as the hand-chosen
+// sixteen (the "redmean" distance between colours, a cheap approximation of how far apart the
+// eye sees them).
+TEST(Render, HundredsOfRobotsKeepTheirColoursApart) {
+  auto rgb = [](const std::string& c) {
+    EXPECT_EQ(c.size(), 7u) << c;
+    return std::array<int, 3>{std::stoi(c.substr(1, 2), nullptr, 16),
+                              std::stoi(c.substr(3, 2), nullptr, 16),
+                              std::stoi(c.substr(5, 2), nullptr, 16)};
+  };
+  auto apart = [](const std::array<int, 3>& a, const std::array<int, 3>& b) {
+    const double mean = (a[0] + b[0]) / 2.0, dr = a[0] - b[0], dg = a[1] - b[1], db = a[2] - b[2];
+    return std::sqrt((2 + mean / 256) * dr * dr + 4 * dg * dg + (2 + (255 - mean) / 256) * db * db);
+  };
+  std::set<std::string> seen;
+  for (size_t i = 0; i < 2000; ++i) EXPECT_TRUE(seen.insert(robotColour(i)).second) << i;
+  double closest = 1e9;
+  for (size_t i = 0; i < 64; ++i)
+    for (size_t j = i + 1; j < 64; ++j)
+      closest = std::min(closest, apart(rgb(robotColour(i)), rgb(robotColour(j))));
+  EXPECT_GE(closest, 20);
+}
+
 // The viewer's picture follows the window: sized on load and on every resize; fixed only when
 // the link asks for it (#fit=0, for screenshots at a known scale).
 TEST(Render, ViewerCanvasFollowsTheWindow) {
   const Scene s = loadScene(scenario("one-robot/bar-slot.json"));
   const std::string html = renderHtmlViewer(s, nullptr);
   EXPECT_NE(html.find("window.addEventListener('resize', fit)"), std::string::npos);
-  EXPECT_NE(html.find("window.innerWidth / W"), std::string::npos);
+  EXPECT_NE(html.find("(window.innerWidth - beside) / W"), std::string::npos);
   const size_t fixed = html.find("cv.style.width = W + 'px'");
   ASSERT_NE(fixed, std::string::npos);
   const size_t asked = html.rfind("get('fit') === '0'", fixed);

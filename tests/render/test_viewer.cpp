@@ -298,8 +298,9 @@ TEST(View, ARecordShowsEachSliceFromTheMomentItWasBuilt) {
   const Vec2 q = viewerPixel(s, *p);
   for (const auto& [rt, shown] : {std::pair{0.0, false}, {0.5 * at / length, false}, {1.0, true}}) {
     int w = 0, h = 0;
-    const auto px = screenshot(
-        dir, html, "fit=0&t=0&traces=0&layers=cells&rt=" + std::to_string(rt), "820,900", w, h);
+    const auto px =
+        screenshot(dir, html, "fit=0&t=0&traces=0&layers=cells&angle=all&rt=" + std::to_string(rt),
+                   "820,900", w, h);
     ASSERT_FALSE(px.empty());
     ASSERT_LT(q.y, h);
     const Rgb c = px[size_t(std::lround(q.y)) * size_t(w) + size_t(std::lround(q.x))];
@@ -334,6 +335,84 @@ TEST(View, ARecordShowsASamplersTreeAsItGrew) {
     if (checked == 20) break;
   }
   EXPECT_GT(checked, 3u);
+}
+
+// The page as a headless Chromium leaves it (window 1200 x 900), after its scripts ran.
+std::string pageDom(TempDir& dir, const std::string& html, const std::string& hash) {
+  auto c = test::runCommand(
+      "chromium --headless --no-sandbox --disable-gpu --window-size=1200,900 "
+      "--virtual-time-budget=5000 --user-data-dir=" +
+      quote(dir.path("profile")) + " --dump-dom " + quote("file://" + html + "#" + hash));
+  EXPECT_EQ(c.code, 0) << c.err;
+  return c.out;
+}
+
+// The first number after `key` in `text`, or -1.
+double numberAfter(const std::string& text, const std::string& key) {
+  const size_t at = text.find(key);
+  return at == std::string::npos ? -1 : std::stod(text.substr(at + key.size()));
+}
+
+// The slice angle of the record nearest `theta`, round the circle.
+double nearestSliceAngle(const PlanRecord& r, double theta) {
+  double best = 0, apart = 1e9;
+  for (const RecordManifold& m : r.manifolds) {
+    if (m.family != "slice") continue;
+    const double d = std::abs(std::remainder(m.theta - theta, 2 * M_PI));
+    if (d < apart) best = m.theta, apart = d;
+  }
+  return best;
+}
+
+// A record's page in a window of 1200 x 900: the scene's picture keeps most of the window's
+// height, with the 3-D view open beside it too (it once shrank to a thumbnail of 80 x 47 px);
+// one robot's slices are by default the one nearest its angle at the motion's moment (every
+// angle stacked into one wash hid the scene); #angle=X picks the slice nearest X rad (it once
+// took X as an index); the growth chart has its axes.
+TEST(View, ARecordPageKeepsTheSceneLargeAndShowsTheSliceAtTheRobotsAngle) {
+  ASSERT_TRUE(chromiumInstalled()) << "chromium is not installed: scripts/setup.sh installs it";
+  TempDir dir;
+  const Scene s = keyholeScene(2);
+  RecordFile record;
+  const std::string html = recordPage(s, "mms", dir, record);
+  for (const char* hash : {"", "cspace=1"}) {
+    const std::string dom = pageDom(dir, html, hash);
+    const size_t view = dom.find("<canvas id=\"view\"");
+    ASSERT_NE(view, std::string::npos) << dom.substr(0, 400);
+    const double width = numberAfter(dom.substr(view), "width: "),
+                 height = numberAfter(dom.substr(view), "height: ");
+    EXPECT_GE(height, 600) << hash;
+    if (std::string(hash).empty()) continue;
+    // The 3-D view beside it, both within the window.
+    const size_t cspace = dom.find("<div id=\"cspace\" style=\"display: block;\"><canvas");
+    ASSERT_NE(cspace, std::string::npos) << dom.substr(0, 2000);
+    EXPECT_LE(width + numberAfter(dom.substr(cspace), "width=\""), 1200);
+  }
+  auto label = [&](const std::string& hash) {
+    const std::string dom = pageDom(dir, html, hash);
+    const size_t at = dom.find("<p id=\"rlabel\"");
+    return at == std::string::npos ? dom : dom.substr(at, dom.find("</p>", at) - at);
+  };
+  char want[96];
+  for (const auto& [t, theta] :
+       {std::pair{0, s.robots[0].start.theta}, {1, s.robots[0].goal.theta}}) {
+    std::snprintf(want, sizeof want,
+                  "cells of the slice at %.3f rad, nearest the robot's angle now",
+                  nearestSliceAngle(record.record, theta));
+    EXPECT_NE(label("t=" + std::to_string(t)).find(want), std::string::npos) << "t = " << t;
+  }
+  std::snprintf(want, sizeof want, "cells of the slice at %.3f rad ·",
+                nearestSliceAngle(record.record, 0));
+  EXPECT_NE(label("angle=0").find(std::string(want).substr(0, std::string(want).size() - 3)),
+            std::string::npos);
+  EXPECT_EQ(label("angle=0").find("nearest the robot"), std::string::npos);
+  EXPECT_EQ(label("angle=all").find("cells of the slice"), std::string::npos);
+  size_t built = 0;
+  for (const auto& [kind, counts] : record.record.growth.counts) built += counts.back();
+  const std::string dom = pageDom(dir, html, "");
+  EXPECT_NE(dom.find("data-axes=\"0 to " + std::to_string(built) + " over 0 to "),
+            std::string::npos)
+      << dom.substr(dom.find("rgrowth"), 300);
 }
 
 // One robot's C-space in 3-D (three.js from Debian's libjs-three): what the record held at the
