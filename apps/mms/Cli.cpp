@@ -144,7 +144,7 @@ std::string paramGroup(const DeclaredParam& d) {
   if (d.users.size() == 1 && d.users[0].first == "auto") return "The default planner (auto)";
   if (mine == d.users.size()) return "MMS (auto, mms, mms-ordered, mms-joint)";
   if (mine == 0) return "OMPL's planners";
-  return "Every planner: the path optimiser";
+  return "Every planner: the path optimiser and the schedule";
 }
 
 std::string typeName(const mms::ParamSpec& spec) {

@@ -87,13 +87,26 @@ int validate(const ValidateArgs& a) {
   return 0;
 }
 
+std::string fleetLine(const Scene& scene, const PathCheckResult& c) {
+  if (scene.robots.size() < 2 || !c.ok) return "";
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "  fleet: makespan %.4g (%.2fx its bound %.4g), sum of distances %.4g (%.2fx its "
+                "bound %.4g), %.3g robots moving at once\n",
+                c.makespan, c.makespanBound > 0 ? c.makespan / c.makespanBound : 1, c.makespanBound,
+                c.distance, c.distanceBound > 0 ? c.distance / c.distanceBound : 1, c.distanceBound,
+                c.movingAtOnce);
+  return line;
+}
+
 int check(const CheckArgs& a) {
   const Scene scene = readScene(a.scene, true);
   const Path path = loadPath(a.path, scene);
   const CollisionChecker checker(scene);
   PathCheckSettings settings;
   settings.maxEvaluations = a.maxEvaluations;
-  const PathCheckResult r = checkPath(scene, checker, path.waypoints, settings);
+  PathCheckResult r = checkPath(scene, checker, path.waypoints, settings);
+  if (r.ok) measureFleet(scene, checker, path.waypoints, r);
   const size_t segments = path.waypoints.size() - 1;
   if (!r.ok && r.reason.find("waypoint puts") != std::string::npos) {  // an end, not a motion
     std::printf("%s: rejected: %s\n", a.path.c_str(), r.reason.c_str());
@@ -111,6 +124,7 @@ int check(const CheckArgs& a) {
               checker.tolerance());
   std::printf("  length: translation %.6g, rotation %.6g rad (summed over robots)\n", r.translation,
               r.rotation);
+  std::printf("%s", fleetLine(scene, r).c_str());
   return 0;
 }
 

@@ -166,6 +166,7 @@ int report(const PlanArgs& a, const Scene& scene, const std::string& label, cons
       "rad, min clearance %.3g\n",
       label.c_str(), plannerName(a, r).c_str(), r.stats.seconds, path.waypoints.size(),
       c.translation, c.rotation, c.minClearance);
+  std::printf("%s", fleetLine(scene, c).c_str());
   printStatistics(r.stats, true);
   if (output.empty()) std::printf("  no path file written: -o FILE writes one\n");
   return 0;

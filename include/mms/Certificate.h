@@ -17,6 +17,14 @@ struct PathCheckResult {
   size_t evaluations = 0;   // clearance evaluations (poses checked)
   double translation = 0;   // summed over robots
   double rotation = 0;      // radians, summed over robots
+  // As fleets are measured (CG:SHOP 2021's makespan and sum of distances), where measured
+  // (measureFleet): at unit speed, a robot's points moving at most one unit per unit time, which
+  // a segment's motion bounds by |dp| + radius * |dtheta|.
+  double makespan = 0;       // until the last robot arrives, a segment as long as its slowest
+  double makespanBound = 0;  // the longest robot's straight start-goal cost (the short turn)
+  double distance = 0;       // the robots' costs summed
+  double distanceBound = 0;  // their straight start-goal costs summed
+  double movingAtOnce = 0;   // robots in motion, in the mean over the makespan
 };
 
 }  // namespace mms

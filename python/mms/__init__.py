@@ -126,10 +126,13 @@ class Check:
     """What the continuous path checker says of a path. True when certified; otherwise
     `reason` says why and `segment` (index of the segment's first waypoint) and `parameter`
     (along it, in [0, 1]) say where. translation, rotation (radians, summed over robots) and
-    min_clearance measure the motion."""
+    min_clearance measure the motion; for a fleet, makespan and distance (the sum of the
+    robots' distances) with their lower bounds makespan_bound and distance_bound, and
+    moving_at_once, the robots in motion in the mean (at unit speed: |dp| + radius |dtheta|)."""
 
     __slots__ = ("ok", "reason", "segment", "parameter", "min_clearance", "evaluations",
-                 "translation", "rotation")
+                 "translation", "rotation", "makespan", "makespan_bound", "distance",
+                 "distance_bound", "moving_at_once")
 
     def __init__(self, d: dict):
         for k in self.__slots__:

@@ -145,6 +145,11 @@ py::dict certificateDict(const PathCheckResult& c) {
   d["evaluations"] = c.evaluations;
   d["translation"] = c.translation;
   d["rotation"] = c.rotation;
+  d["makespan"] = c.makespan;
+  d["makespan_bound"] = c.makespanBound;
+  d["distance"] = c.distance;
+  d["distance_bound"] = c.distanceBound;
+  d["moving_at_once"] = c.movingAtOnce;
   return d;
 }
 

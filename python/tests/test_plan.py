@@ -143,3 +143,16 @@ def test_many_discs_are_planned_one_at_a_time_and_certified():
     assert mms.check(scene, r.path).ok
     with pytest.raises(mms.InputError):
         mms.scenario("disc-grid", robots=20, spacing=1.0)
+
+
+def test_a_fleet_moves_at_once_and_is_measured():
+    scene = mms.scenario("disc-grid", seed=2, robots=30, spacing=6)
+    at_once, in_turn = mms.plan(scene, time_limit=30), mms.plan(scene, time_limit=30, concurrent=0)
+    assert at_once.found and in_turn.found
+    c, d = at_once.certificate, in_turn.certificate
+    assert c.makespan_bound > 0 and c.makespan >= c.makespan_bound * (1 - 1e-9)
+    assert c.makespan < 0.5 * d.makespan  # the moves overlap in time
+    assert c.moving_at_once > 2 and abs(d.moving_at_once - 1) < 1e-9
+    assert abs(c.distance - d.distance) < 1e-6 * d.distance  # each robot's own motion as planned
+    checked = mms.check(scene, at_once.path)
+    assert checked.ok and abs(checked.makespan - c.makespan) < 1e-9 * c.makespan

@@ -34,6 +34,11 @@ nlohmann::json RunRecord::toJson() const {
           {"memory_limit_mb", memoryLimitMb},
           {"translation", translation},
           {"rotation", rotation},
+          {"makespan", makespan},
+          {"makespan_bound", makespanBound},
+          {"distance", distance},
+          {"distance_bound", distanceBound},
+          {"moving_at_once", movingAtOnce},
           {"graph_size", graphSize},
           {"manifolds_built", manifoldsBuilt},
           {"manifolds_used", manifoldsUsed},
@@ -61,6 +66,11 @@ RunRecord RunRecord::fromJson(const nlohmann::json& j) {
   r.memoryLimitMb = j.value("memory_limit_mb", 0.0);
   r.translation = j.value("translation", 0.0);
   r.rotation = j.value("rotation", 0.0);
+  r.makespan = j.value("makespan", 0.0);
+  r.makespanBound = j.value("makespan_bound", 0.0);
+  r.distance = j.value("distance", 0.0);
+  r.distanceBound = j.value("distance_bound", 0.0);
+  r.movingAtOnce = j.value("moving_at_once", 0.0);
   r.graphSize = j.value("graph_size", size_t(0));
   r.manifoldsBuilt = j.value("manifolds_built", size_t(0));
   r.manifoldsUsed = j.value("manifolds_used", size_t(0));
@@ -140,7 +150,9 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
     s.tightness = g.front()->tightness;
     s.timeLimit = g.front()->timeLimit;
     s.runs = g.size();
+    s.robots = g.front()->robots;
     std::vector<double> solvedTimes, all, lengths, rotations, graphs, built, used;
+    std::vector<double> makespans, distances, moving;  // fleets: against their bounds
     for (const RunRecord* r : g) {
       s.uncertified += r->status == "uncertified";
       s.crashed += r->status == "crashed";
@@ -159,6 +171,11 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
         rotations.push_back(r->rotation);
         built.push_back(double(r->manifoldsBuilt));
         used.push_back(double(r->manifoldsUsed));
+        if (r->robots >= 2 && r->makespanBound > 0 && r->distanceBound > 0) {
+          makespans.push_back(r->makespan / r->makespanBound);
+          distances.push_back(r->distance / r->distanceBound);
+          moving.push_back(r->movingAtOnce);
+        }
       } else {
         all.push_back(std::numeric_limits<double>::infinity());
       }
@@ -183,6 +200,9 @@ std::vector<Summary> summarize(const std::vector<RunRecord>& runs) {
     s.medianGraph = median(graphs);
     s.medianBuilt = median(built);
     s.medianUsed = median(used);
+    s.medianMakespanRatio = median(makespans);
+    s.medianDistanceRatio = median(distances);
+    s.medianMovingAtOnce = median(moving);
     out.push_back(s);
   }
   return out;
@@ -247,6 +267,20 @@ std::string label(const Summary& s) {
   return s.planner + (s.parameters.empty() ? "" : " (" + s.parameters + ")");
 }
 }  // namespace
+
+std::string fleetReport(const std::vector<Summary>& summaries) {
+  std::ostringstream md;
+  for (const Summary& s : summaries) {
+    if (s.robots < 2 || s.medianMakespanRatio == 0) continue;
+    if (md.tellp() == 0)
+      md << "| scene | planner | robots | makespan / its bound | sum of distances / its bound | "
+            "robots moving at once |\n|---|---|---|---|---|---|\n";
+    md << "| " << s.scene << " | " << label(s) << " | " << s.robots << " | "
+       << fmt("%.3g", s.medianMakespanRatio) << " | " << fmt("%.3g", s.medianDistanceRatio) << " | "
+       << fmt("%.3g", s.medianMovingAtOnce) << " |\n";
+  }
+  return md.str();
+}
 
 std::string speedupReport(const std::vector<Summary>& summaries) {
   std::vector<std::string> scenes;
@@ -400,9 +434,10 @@ std::string csvReport(const std::vector<RunRecord>& runs) {
   std::ostringstream csv;
   csv << "scene,tightness,planner,parameters,seed,status,seconds,wall_seconds,peak_memory_mb,"
          "translation,rotation,"
-         "graph_size,solved_by\n";
+         "graph_size,solved_by,makespan,makespan_bound,distance,distance_bound,moving_at_once\n";
   // Fields that do not apply are empty: no tightness for a scene without one, no path
   // measures for a run without a certified path.
+  auto fleet = [](const RunRecord& r) { return r.solved() && r.robots >= 2 && r.makespan > 0; };
   auto field = [](bool applies, double v) {
     std::ostringstream s;
     if (applies) s << v;
@@ -412,7 +447,10 @@ std::string csvReport(const std::vector<RunRecord>& runs) {
     csv << r.scene << "," << field(r.tightness >= 0, r.tightness) << "," << r.planner << ",\""
         << r.parameters << "\"," << r.seed << "," << r.status << "," << r.seconds << ","
         << r.wallSeconds << "," << r.peakMemoryMb << "," << field(r.solved(), r.translation) << ","
-        << field(r.solved(), r.rotation) << "," << r.graphSize << "," << r.solvedBy << "\n";
+        << field(r.solved(), r.rotation) << "," << r.graphSize << "," << r.solvedBy << ","
+        << field(fleet(r), r.makespan) << "," << field(fleet(r), r.makespanBound) << ","
+        << field(fleet(r), r.distance) << "," << field(fleet(r), r.distanceBound) << ","
+        << field(fleet(r), r.movingAtOnce) << "\n";
   return csv.str();
 }
 

@@ -24,6 +24,9 @@ struct RunRecord {
   double peakMemoryMb = 0;
   double timeLimit = 0, memoryLimitMb = 0;
   double translation = 0, rotation = 0;
+  // Two robots or more, as fleets are measured (PathCheckResult): makespan and sum of distances
+  // with their lower bounds, and robots moving at once (0 in records of older versions).
+  double makespan = 0, makespanBound = 0, distance = 0, distanceBound = 0, movingAtOnce = 0;
   size_t graphSize = 0;  // graph nodes (mms) or planner states (OMPL)
   // mms: manifolds (slices + lines) built, and those the solution lies on (an oracle's count)
   size_t manifoldsBuilt = 0, manifoldsUsed = 0;
@@ -52,6 +55,10 @@ struct Summary {
   bool medianSolved = false;
   double medianLength = 0, medianRotation = 0, medianGraph = 0, peakMemoryMb = 0;
   double medianBuilt = 0, medianUsed = 0;  // manifolds, over solved runs (mms)
+  size_t robots = 0;
+  // Over solved runs of two robots or more: makespan and sum of distances against their bounds,
+  // and robots moving at once.
+  double medianMakespanRatio = 0, medianDistanceRatio = 0, medianMovingAtOnce = 0;
 };
 
 std::vector<Summary> summarize(const std::vector<RunRecord>& runs);
@@ -65,6 +72,10 @@ std::string crashReport(const std::vector<RunRecord>& runs);
 /// with the speed-up (a lower bound where that planner's median is past the time limit) and
 /// how many manifolds MMS built against those its path uses; "" when either side did not run.
 std::string speedupReport(const std::vector<Summary>& summaries);
+/// Per scene of two robots or more and planner: the makespan and sum of distances against their
+/// lower bounds and the robots moving at once, medians of the solved runs; "" without such a
+/// scene.
+std::string fleetReport(const std::vector<Summary>& summaries);
 /// Per scene, every planner ranked by median time (unsolved last), then by runs solved, with
 /// its time against the best one's.
 std::string rankingReport(const std::vector<Summary>& summaries);

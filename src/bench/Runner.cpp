@@ -96,6 +96,11 @@ void fillFromStats(RunRecord& r, const std::string& statsFile) {
     if (s.status == PlanStatus::Found) {
       r.translation = s.certificate.translation;
       r.rotation = s.certificate.rotation;
+      r.makespan = s.certificate.makespan;
+      r.makespanBound = s.certificate.makespanBound;
+      r.distance = s.certificate.distance;
+      r.distanceBound = s.certificate.distanceBound;
+      r.movingAtOnce = s.certificate.movingAtOnce;
     }
     r.graphSize = s.stats.graphNodes;
     r.manifoldsBuilt = s.stats.manifoldsBuilt;
@@ -191,6 +196,8 @@ void writeBenchReports(const std::string& dir) {
   // MMS and the portfolio against the rest, where both kinds ran.
   if (const std::string ours = speedupReport(summaries); !ours.empty())
     md += "\n## MMS and the portfolio against the best other planner\n\n" + ours;
+  if (const std::string fleets = fleetReport(summaries); !fleets.empty())
+    md += "\n## Fleets: makespan and sum of distances against their bounds\n\n" + fleets;
   md += "\n## Every planner ranked\n\n" + rankingReport(summaries) +
         "\n![time per run](times.svg)\n\n![runs solved](success.svg)\n\n## All runs\n\n";
   md += markdownReport(fixed, "");

@@ -555,4 +555,41 @@ double certifiedPrefix(const CollisionChecker& checker, const Config& a, const C
   return clear;
 }
 
+void measureFleet(const Scene& scene, const CollisionChecker& checker,
+                  const std::vector<Config>& waypoints, PathCheckResult& r) {
+  const size_t robots = scene.robots.size();
+  std::vector<double> own(robots, 0);  // each robot's cost
+  double makespan = 0, moving = 0;
+  for (size_t k = 0; k + 1 < waypoints.size(); ++k) {
+    double segment = 0;
+    size_t movers = 0;
+    for (size_t i = 0; i < robots; ++i) {
+      const Pose p = poseOf(waypoints[k], i), q = poseOf(waypoints[k + 1], i);
+      if (p.x == q.x && p.y == q.y && p.theta == q.theta) continue;
+      const double c = poseCost(checker, i, p, q);
+      own[i] += c;
+      segment = std::max(segment, c);
+      ++movers;
+    }
+    makespan += segment;
+    moving += segment * double(movers);
+  }
+  r.makespan = makespan;
+  r.distance = r.makespanBound = r.distanceBound = 0;
+  for (size_t i = 0; i < robots; ++i) {
+    r.distance += own[i];
+    const Robot& robot = scene.robots[i];
+    Pose goal = robot.goal;
+    // The turn the short way (the certifier takes the goal's angle modulo a full turn).
+    goal.theta =
+        robot.motion == Motion::Translate
+            ? robot.start.theta
+            : robot.start.theta + std::remainder(robot.goal.theta - robot.start.theta, 2 * M_PI);
+    const double least = poseCost(checker, i, robot.start, goal);
+    r.distanceBound += least;
+    r.makespanBound = std::max(r.makespanBound, least);
+  }
+  r.movingAtOnce = makespan > 0 ? moving / makespan : 0;
+}
+
 }  // namespace mms

@@ -6,6 +6,7 @@
 // other robots) must exceed how far any of its points can move within half the piece,
 // |dp| + radius * |dtheta|. Clearances are measured on the robots shrunk by the contact
 // tolerance, so touching contacts are allowed and penetration beyond the tolerance is not.
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -25,6 +26,21 @@ struct PathCheckSettings {
   /// and minClearance is only an upper bound of the path's clearance.
   bool measureClearance = true;
 };
+
+/// One robot's cost from pose a to pose b: |dp| + radius * |dtheta|, which bounds how far any of
+/// its points moves (the certifier's bound, the optimiser's cost, and at unit speed the time the
+/// motion takes). Inline: the optimiser's attempts take thousands.
+inline double poseCost(const CollisionChecker& checker, size_t robot, const Pose& a,
+                       const Pose& b) {
+  // Not hypot, a call into libm: a cost needs no guard against overflow.
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return std::sqrt(dx * dx + dy * dy) + checker.radius(robot) * std::fabs(b.theta - a.theta);
+}
+
+/// The path's makespan, sum of distances, their lower bounds and the robots moving at once, into
+/// `r` (PathCheckResult's fleet measures).
+void measureFleet(const Scene& scene, const CollisionChecker& checker,
+                  const std::vector<Config>& waypoints, PathCheckResult& r);
 
 /// Checks that the path starts at the scene's start, ends at its goal, keeps translate-only
 /// robots at their angle, and is free as a continuous motion.

@@ -29,7 +29,10 @@ std::vector<Config> readPathFile(const std::string& file, const Scene& scene) {
 }
 
 PathCheckResult certify(const Scene& scene, const std::vector<Config>& waypoints) {
-  return checkPath(scene, CollisionChecker(scene), waypoints);
+  const CollisionChecker checker(scene);
+  PathCheckResult c = checkPath(scene, checker, waypoints);
+  if (c.ok) measureFleet(scene, checker, waypoints, c);
+  return c;
 }
 
 }  // namespace mms

@@ -107,11 +107,14 @@ nlohmann::json toJson(const RunSummary& r) {
                       {"time_limit", r.timeLimit},    {"status", toString(r.status)},
                       {"seconds", r.stats.seconds},   {"parameters", r.parameters},
                       {"statistics", toJson(r.stats)}};
-  if (r.status == PlanStatus::Found)
-    j["path"] = {{"waypoints", r.waypoints},
-                 {"translation", r.certificate.translation},
-                 {"rotation", r.certificate.rotation},
-                 {"min_clearance", r.certificate.minClearance}};
+  if (r.status == PlanStatus::Found) {
+    const PathCheckResult& c = r.certificate;
+    j["path"] = {{"waypoints", r.waypoints},        {"translation", c.translation},
+                 {"rotation", c.rotation},          {"min_clearance", c.minClearance},
+                 {"makespan", c.makespan},          {"makespan_bound", c.makespanBound},
+                 {"distance", c.distance},          {"distance_bound", c.distanceBound},
+                 {"moving_at_once", c.movingAtOnce}};
+  }
   if (r.status == PlanStatus::Uncertified) j["rejection"] = r.certificate.reason;
   return j;
 }
@@ -135,6 +138,12 @@ RunSummary runSummaryFromJson(const nlohmann::json& j) {
     r.certificate.translation = p.at("translation").get<double>();
     r.certificate.rotation = p.at("rotation").get<double>();
     r.certificate.minClearance = p.at("min_clearance").get<double>();
+    // Runs recorded before fleets were measured have none of these.
+    r.certificate.makespan = p.value("makespan", 0.0);
+    r.certificate.makespanBound = p.value("makespan_bound", 0.0);
+    r.certificate.distance = p.value("distance", 0.0);
+    r.certificate.distanceBound = p.value("distance_bound", 0.0);
+    r.certificate.movingAtOnce = p.value("moving_at_once", 0.0);
   }
   r.certificate.reason = j.value("rejection", "");
   return r;

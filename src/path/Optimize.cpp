@@ -7,7 +7,6 @@
 
 namespace mms {
 
-using detail::poseCost;
 using detail::segmentCost;
 
 namespace {

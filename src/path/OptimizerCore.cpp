@@ -6,13 +6,6 @@
 namespace mms::detail {
 
 // One robot's cost from pose a to pose b.
-double poseCost(const CollisionChecker& checker, size_t robot, const Pose& a, const Pose& b) {
-  // Not hypot, a call into libm that the optimiser's attempts made thousands of times: a cost
-  // needs no guard against overflow.
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return std::sqrt(dx * dx + dy * dy) + checker.radius(robot) * std::fabs(b.theta - a.theta);
-}
-
 double segmentCost(const CollisionChecker& checker, const Config& a, const Config& b) {
   double c = 0;
   for (size_t i = 0; 3 * i < a.size(); ++i) {

@@ -10,8 +10,6 @@
 
 namespace mms::detail {
 
-/// One robot's cost from pose a to pose b: |dp| + radius * |dtheta|.
-double poseCost(const CollisionChecker& checker, size_t robot, const Pose& a, const Pose& b);
 /// All robots' cost from a to b.
 double segmentCost(const CollisionChecker& checker, const Config& a, const Config& b);
 

@@ -15,6 +15,7 @@
 
 #include "check/PathChecker.h"
 #include "path/Optimize.h"
+#include "path/Schedule.h"
 #include "registry/Adapters.h"
 #include "util/Deferred.h"
 #include "util/Number.h"
@@ -69,8 +70,29 @@ class Optimizing final : public Planner {
                        [&](const ParamSpec& s) { return s.key() == inner.key(); }))
         specs.push_back(inner);
     r.parameterSpecs = std::move(specs);
-    if (!r.found() || parameters_.at("optimize") == 0) return r;
+    if (!r.found()) return r;
     const CollisionChecker checker(scene_);
+    if (parameters_.at("optimize") != 0) optimizeFound(r, checker, stop);
+    if (parameters_.at("concurrent") != 0 && scene_.robots.size() >= 2)
+      moveAtOnce(r, checker, stop);
+    measureFleet(scene_, checker, r.waypoints, r.certificate);
+    return r;
+  }
+
+  void finishBackgroundWork() override { inner_->finishBackgroundWork(); }
+
+  bool setQuery(const Config& start, const Config& goal) override {
+    if (!inner_->setQuery(start, goal)) return false;
+    for (size_t i = 0; i < scene_.robots.size(); ++i) {
+      scene_.robots[i].start = poseOf(start, i);
+      scene_.robots[i].goal = poseOf(goal, i);
+    }
+    return true;
+  }
+
+ private:
+  /// The optimiser on a found path, and with --restarts the best of more runs.
+  void optimizeFound(PlanResult& r, const CollisionChecker& checker, const Termination& stop) {
     OptimizeStats total;
     improve(r, checker, seed_, stop, total);
     r.stats.phases.emplace_back("optimize", total.seconds);
@@ -104,21 +126,30 @@ class Optimizing final : public Planner {
     r.stats.counts.emplace_back("optimize_rounds_checks", total.roundsWork);
     if (total.slices > 0) r.stats.counts.emplace_back("optimize_slices", total.slices);
     if (total.gridRoutes > 0) r.stats.counts.emplace_back("optimize_grid_routes", total.gridRoutes);
-    return r;
   }
 
-  void finishBackgroundWork() override { inner_->finishBackgroundWork(); }
-
-  bool setQuery(const Config& start, const Config& goal) override {
-    if (!inner_->setQuery(start, goal)) return false;
-    for (size_t i = 0; i < scene_.robots.size(); ++i) {
-      scene_.robots[i].start = poseOf(start, i);
-      scene_.robots[i].goal = poseOf(goal, i);
+  /// Robots moving at once where they can (path/Schedule.h), certified again: a refusal (a bug)
+  /// or the limit keeps the path as it was. Phase "schedule".
+  void moveAtOnce(PlanResult& r, const CollisionChecker& checker, const Termination& stop) const {
+    Stopwatch watch;
+    ScheduleStats s;
+    std::vector<Config> w = concurrentSchedule(scene_, checker, r.waypoints, &s);
+    if (s.makespanAfter < s.makespanBefore) {
+      const StopScope scope(stop);
+      try {
+        const PathCheckResult c = checkPath(scene_, checker, w);
+        if (c.ok) {
+          r.waypoints = std::move(w);
+          r.certificate = c;
+        }
+      } catch (const Stopped&) {
+      }
     }
-    return true;
+    r.stats.phases.emplace_back("schedule", watch.seconds());
+    r.stats.counts.emplace_back("schedule_actions", s.actions);
+    r.stats.counts.emplace_back("schedule_dependencies", s.dependencies);
   }
 
- private:
   /// Optimises a found path in place (certified again at the end), adding to `stats`.
   void improve(PlanResult& r, const CollisionChecker& checker, uint64_t seed,
                const Termination& stop, OptimizeStats& stats) const {
@@ -239,15 +270,27 @@ PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
       "With --optimize: plan N more times from seeds drawn from --seed, optimise each path and "
       "keep the best by --objective (anytime improvement within the time limit; the optimiser "
       "alone keeps the first path's way round the obstacles) (default 0)"};
+  const ParamSpec concurrent{
+      "concurrent",
+      Type::Integer,
+      0,
+      1,
+      1,
+      "Two robots or more: 1 moves them at once where they can, each move of the path started "
+      "as soon as the moves whose swept regions it may meet are done and the result certified "
+      "again (every robot's own motion as planned, the makespan shorter); 0: the path's moves "
+      "in its order (default 1)"};
   const RoundsParams bounds = roundsParams();
+  info.params.push_back(concurrent);
   info.params.push_back(optimize);
   info.params.push_back(objective);
   info.params.push_back(restarts);
   info.params.push_back(bounds.rounds);
   info.params.push_back(bounds.gain);
   info.params.push_back(bounds.effort);
-  info.make = [make = info.make, optimize, objective, restarts, bounds, specs = info.params](
-                  const Scene& scene, const PlannerParams& params, const std::string& source) {
+  info.make = [make = info.make, optimize, objective, restarts, bounds, concurrent,
+               specs = info.params](const Scene& scene, const PlannerParams& params,
+                                    const std::string& source) {
     OptimizeSettings s;
     s.objective =
         paramValue(params, objective) == 1 ? PathObjective::Clearance : PathObjective::Length;
@@ -263,6 +306,7 @@ PlannerInfo withPathOptimization(PlannerInfo info, bool onByDefault) {
     return std::make_unique<Optimizing>(
         std::move(factory), scene, params.seed, s,
         std::map<std::string, double>{{"optimize", paramValue(params, optimize)},
+                                      {"concurrent", paramValue(params, concurrent)},
                                       {"objective", paramValue(params, objective)},
                                       {"restarts", paramValue(params, restarts)},
                                       {bounds.rounds.key(), paramValue(params, bounds.rounds)},

@@ -11,7 +11,7 @@
 namespace mms {
 
 bool afterFirstPath(const std::string& phase) {
-  return phase == "optimize" || phase == "simplify" || phase == "restarts";
+  return phase == "optimize" || phase == "simplify" || phase == "restarts" || phase == "schedule";
 }
 
 double paramValue(const PlannerParams& params, const ParamSpec& spec) {

@@ -54,6 +54,40 @@ TEST(BenchReport, TrimmedMeanMedianAndFailures) {
   EXPECT_EQ(lines(csvReport(runs)), runs.size() + 1);
 }
 
+// Fleets are measured as their community does: the makespan and the sum of distances against
+// their lower bounds, and the robots moving at once, medians of the solved runs, for scenes of
+// two robots or more; the CSV carries each run's.
+TEST(BenchReport, FleetsReportMakespanAndDistanceAgainstTheirBounds) {
+  std::vector<RunRecord> runs;
+  const double makespan[] = {20, 30, 40}, distance[] = {110, 120, 130}, moving[] = {2, 3, 4};
+  for (uint64_t i = 0; i < 3; ++i) {
+    RunRecord r = run("mms", i + 1, "found", 1);
+    r.scene = "grid";
+    r.robots = 10;
+    r.makespan = makespan[i], r.makespanBound = 10;
+    r.distance = distance[i], r.distanceBound = 100;
+    r.movingAtOnce = moving[i];
+    runs.push_back(r);
+  }
+  RunRecord unsolved = runs.back();
+  unsolved.status = "not_found", unsolved.seed = 4, unsolved.makespan = 1e9;
+  runs.push_back(unsolved);
+  RunRecord alone = run("mms", 1, "found", 1);
+  alone.robots = 1;
+  alone.makespan = alone.makespanBound = alone.distance = alone.distanceBound = 5;
+  runs.push_back(alone);
+  const std::string md = fleetReport(summarize(runs));
+  EXPECT_NE(md.find("| grid | mms | 10 | 3 | 1.2 | 3 |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("| s |"), std::string::npos) << "one robot is no fleet: " << md;
+  EXPECT_EQ(fleetReport(summarize({alone})), "");
+  const std::string csv = csvReport(runs);
+  EXPECT_NE(csv.find(",makespan,makespan_bound,distance,distance_bound,moving_at_once\n"),
+            std::string::npos);
+  EXPECT_NE(csv.find(",20,10,110,100,2\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",,,,,\n"), std::string::npos) << "no measures for a run without a path";
+  EXPECT_EQ(RunRecord::fromJson(runs[0].toJson()).makespanBound, 10);
+}
+
 // A crashed run (a signal, exit 3) is not a timeout: the table counts it in a column of its
 // own, the rankings say so, and a line under the table names each crashed run.
 TEST(BenchReport, CrashesHaveAColumnAndALineNamingTheRuns) {
@@ -84,7 +118,7 @@ TEST(BenchReport, OneRunHasNoDeviationAndUncertifiedRunsNoPathMeasures) {
   EXPECT_EQ(md.find("± 0 "), std::string::npos) << md;
   const std::string csv = csvReport(runs);
   // No tightness (the scene has none), no translation or rotation for the uncertified run.
-  EXPECT_NE(csv.find("s,,c,\"\",1,uncertified,2,0,0,,,0,\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("s,,c,\"\",1,uncertified,2,0,0,,,0,,,,,,\n"), std::string::npos) << csv;
   EXPECT_EQ(csv.find("-1"), std::string::npos) << csv;
 }
 

@@ -332,7 +332,7 @@ TEST(CliInput, HelpIsWrappedGroupedAndReadsAsText) {
   for (const char* group :
        {"\nPlanner:\n", "\nLimits:\n", "\nOutputs:\n",
         "\nMMS (auto, mms, mms-ordered, mms-joint):\n", "\nThe default planner (auto):\n",
-        "\nEvery planner: the path optimiser:\n", "\nOMPL's planners:\n"}) {
+        "\nEvery planner: the path optimiser and the schedule:\n", "\nOMPL's planners:\n"}) {
     const size_t here = plan.find(group);
     ASSERT_NE(here, std::string::npos) << group << plan;
     EXPECT_GT(here, at) << group;

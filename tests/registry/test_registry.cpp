@@ -134,7 +134,7 @@ TEST(Registry, PlanOptionsComeFromTheDeclarations) {
   EXPECT_EQ(wrong.err,
             "--n-theta: not a parameter of planner prm (its parameters: "
             "--resolution, --k, --simplify, --certified-motions, --free-samples, --lean-angles, "
-            "--optimize, "
+            "--concurrent, --optimize, "
             "--objective, --restarts, --optimize-rounds, --optimize-gain, --optimize-effort)\n");
   const Outcome text = runMms("plan " + scene + " --n-theta many");
   EXPECT_EQ(text.code, 2);
