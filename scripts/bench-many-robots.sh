@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Many robots (docs/benchmarks.md, "Many robots"): the many-disc families at the sizes of the
+# Many robots (docs/benchmarks.md, "Many robots"): the many-robot families (discs among
+# triangles and on grids, the box of touching discs, carts in a warehouse) at the sizes of the
 # targets, MMS (mms: the ordered planner from 8 robots), the k-robot MMS (mms-joint) and OMPL's
 # RRT-Connect in the robots' compound space, in one `mms bench` run; then MMS alone on growing
 # numbers of discs (20 to 500), for time and memory against the number of robots.
@@ -7,7 +8,8 @@
 # Environment: LIMIT (seconds per run, default 10), JOBS (default 2), FAMILIES (default below;
 # NAME:ROBOTS[:SPACING]), PLANNERS (default mms,mms-joint,rrtconnect), SIZES (the sweep's
 # numbers of robots, default "20 50 100 200 500"), SWEEP_SEEDS (default 5 of the set).
-# Writes OUTPUT_DIR/summary.md (medians, seeds solved, peak memory) and OUTPUT_DIR/sweep/bench
+# Writes OUTPUT_DIR/summary.md (medians, seeds solved, peak memory; makespan and sum of
+# distances against their bounds, robots moving at once) and OUTPUT_DIR/sweep/bench
 # (whose report.md has the plot robots.svg).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,7 +22,7 @@ esac
 out=${2:-bench-many-robots-$set_name}
 limit=${LIMIT:-10}
 jobs=${JOBS:-2}
-families=${FAMILIES:-disc-triangles:20 disc-grid:50:3 disc-grid:100:5 disc-triangles:100 disc-grid:500:10}
+families=${FAMILIES:-disc-triangles:20 disc-grid:50:3 disc-grid:100:5 disc-triangles:100 disc-grid:500:10 disc-box:29 warehouse:20}
 planners=${PLANNERS:-mms,mms-joint,rrtconnect}
 sizes=${SIZES:-20 50 100 200 500}
 sweep_seeds=${SWEEP_SEEDS:-$(echo $seeds | tr ' ' '\n' | head -5 | tr '\n' ' ')}

@@ -5,8 +5,9 @@ Usage: many-robots-summary.py RESULTS_CSV TIME_LIMIT [SWEEP_RESULTS_CSV]
 
 Scenes are grouped into families by their name without the trailing "-SEED". Per family and
 planner: the median time to the first certified path over the seeds (a failure counts as the
-limit), the seeds solved and the median peak memory. The sweep's table: per family and number
-of robots, MMS's median time and memory.
+limit), the seeds solved and the median peak memory; then, over the solved runs, the median
+makespan and sum of distances against their lower bounds and the robots moving at once. The
+sweep's table: per family and number of robots, MMS's median time and memory.
 """
 import csv
 import re
@@ -23,6 +24,7 @@ def robots_in(family):
 
 def read(path, limit):
     rows = defaultdict(list)  # (family, planner) -> [(seconds or limit, solved, memory MB)]
+    fleets = defaultdict(list)  # (family, planner) -> [(makespan, distance ratios, moving)]
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
             family = re.sub(r"-\d+$", "", row["scene"])
@@ -30,7 +32,19 @@ def read(path, limit):
             seconds = min(float(row["seconds"]), limit) if ok else limit
             memory = float(row["peak_memory_mb"] or 0)
             rows[(family, row["planner"])].append((seconds, ok, memory))
+            if ok and row.get("makespan_bound"):
+                fleets[(family, row["planner"])].append(
+                    (float(row["makespan"]) / float(row["makespan_bound"]),
+                     float(row["distance"]) / float(row["distance_bound"]),
+                     float(row["moving_at_once"])))
+    read.fleets = fleets
     return rows
+
+
+def fleet_cell(runs):
+    if not runs:
+        return "–"
+    return " / ".join(f"{statistics.median(r[k] for r in runs):.3g}" for k in range(3))
 
 
 def cell(runs, limit):
@@ -51,6 +65,16 @@ def main():
     for family in families:
         print(f"| {family} | " + " | ".join(
             cell(rows[(family, p)], limit) if (family, p) in rows else "–" for p in planners) + " |")
+    fleets = read.fleets
+    print()
+    print("Makespan / its bound, sum of distances / its bound, robots moving at once (medians of "
+          "the solved runs):")
+    print()
+    print("| family | " + " | ".join(planners) + " |")
+    print("|---|" + "---|" * len(planners))
+    for family in families:
+        print(f"| {family} | " + " | ".join(fleet_cell(fleets[(family, p)]) for p in planners)
+              + " |")
     if len(sys.argv) > 3:
         sweep = read(sys.argv[3], 60)
         print()

@@ -477,13 +477,15 @@ Command addImport(CLI::App& app) {
 Command addExport(CLI::App& app) {
   return withOneFile<ExportArgs>(
       app, "export",
-      "Write a scene as discopygal JSON (--to discopygal), or a path as OMPL.app's .path text\n"
-      "(--to ompl-path, one rigid robot)",
+      "Write a scene as discopygal JSON (--to discopygal), a path as OMPL.app's .path text\n"
+      "(--to ompl-path, one rigid robot) or as timed trajectories, one per robot (--to\n"
+      "trajectories: CSV robot,name,t,x,y,theta at unit speed, for fleet software)",
       exportScene, [](CLI::App* cmd, ExportArgs& a) {
-        sceneAndPath(cmd, a.scene, a.path, "Scene file", "Path file (for --to ompl-path)");
-        cmd->add_option("--to", a.to, "discopygal or ompl-path")
+        sceneAndPath(cmd, a.scene, a.path, "Scene file",
+                     "Path file (for --to ompl-path and trajectories)");
+        cmd->add_option("--to", a.to, "discopygal, ompl-path or trajectories")
             ->required()
-            ->check(CLI::IsMember({"discopygal", "ompl-path"}));
+            ->check(CLI::IsMember({"discopygal", "ompl-path", "trajectories"}));
         cmd->add_flag("--force", a.force,
                       "--to discopygal: write robots that rotate as translating ones at their "
                       "start angle (discopygal's polygon robots only translate)");

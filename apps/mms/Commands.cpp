@@ -13,6 +13,7 @@
 #include "io/PathIO.h"
 #include "io/RecordIO.h"
 #include "io/SceneIO.h"
+#include "io/Trajectories.h"
 #include "mms/Errors.h"
 #include "render/HtmlViewer.h"
 #include "render/SvgRenderer.h"
@@ -207,6 +208,9 @@ int exportScene(const ExportArgs& a) {
                          "'): rotates, and discopygal's polygon robots only translate (--force "
                          "writes it translating at its start angle)");
     text = discopygalJson(scene, notes);
+  } else if (a.to == "trajectories") {
+    if (a.path.empty()) throw InputError(a.scene + ": (PATH): --to trajectories needs a path file");
+    text = trajectoriesCsv(scene, loadPath(a.path, scene).waypoints);
   } else {
     if (a.path.empty()) throw InputError(a.scene + ": (PATH): --to ompl-path needs a path file");
     if (scene.robots.size() != 1 || scene.robots[0].motion != Motion::Rigid)

@@ -231,6 +231,27 @@ OneRobotResult OneRobotPlanner::solve(const Pose& start, const Pose& goal, const
   }
 }
 
+namespace {
+
+// A round's targets of slices and lines, and where the round began: slices and lines grow in
+// proportion, so the round's share of its targets met is the mean of theirs.
+struct RoundTargets {
+  size_t slices, lines, slicesFrom, linesFrom;
+  double share(size_t builtSlices, size_t builtLines) const {
+    auto part = [](size_t now, size_t from, size_t to) {
+      return to <= from ? 1.0 : std::min(1.0, double(now - from) / double(to - from));
+    };
+    return (part(builtSlices, slicesFrom, slices) + part(builtLines, linesFrom, lines)) / 2;
+  }
+  // The next round: twice the targets, from what is built.
+  void doubleFrom(size_t builtSlices, size_t builtLines) {
+    slicesFrom = builtSlices, linesFrom = builtLines;
+    slices *= 2, lines *= 2;
+  }
+};
+
+}  // namespace
+
 OneRobotResult OneRobotPlanner::solveRounds(
     const Pose& start, const Pose& goal, const Termination& stop,
     const std::function<void(const OneRobotStats&)>& progress) {
@@ -255,8 +276,8 @@ OneRobotResult OneRobotPlanner::solveRounds(
   // The slices at the start's and goal's angles stand beside the sequence: counted in it they
   // would shift the interleaving, and a scene solved in round one would build other manifolds.
   auto sequenced = [&] { return slices().size() - extraSlices_; };
-  size_t targetSlices = std::max(sequenced(), settings_.nTheta);
-  size_t targetLines = std::max(lines().size(), settings_.nLines);
+  RoundTargets target{std::max(sequenced(), settings_.nTheta),
+                      std::max(lines().size(), settings_.nLines), sequenced(), lines().size()};
   Stopwatch sinceReport;
   auto report = [&](bool force) {
     if (!progress || (!force && sinceReport.seconds() < 1.0)) return;
@@ -266,26 +287,17 @@ OneRobotResult OneRobotPlanner::solveRounds(
   // Slices and lines interleaved in the round's proportion, so that an early connection finds
   // few of either built (the angle sequence covers the circle evenly at every prefix). The
   // search runs as soon as start and goal connect: in open scenes a few dozen lines suffice.
-  size_t slicesAtRoundStart = sequenced(), linesAtRoundStart = lines().size();
   RoundHooks h;
-  h.growing = [&] { return sequenced() < targetSlices || lines().size() < targetLines; };
+  h.growing = [&] { return sequenced() < target.slices || lines().size() < target.lines; };
   h.complete = [&] { return !h.growing(); };
-  // Slices and lines grow in proportion: the mean of their shares.
-  h.share = [&] {
-    auto share = [](size_t now, size_t from, size_t to) {
-      return to <= from ? 1.0 : std::min(1.0, double(now - from) / double(to - from));
-    };
-    return (share(sequenced(), slicesAtRoundStart, targetSlices) +
-            share(lines().size(), linesAtRoundStart, targetLines)) /
-           2;
-  };
+  h.share = [&] { return target.share(sequenced(), lines().size()); };
   h.grow = [&] {
     if (!spinsAdded_) addSpinPlaces();
     // After two slices of the sequence: where those connect start and goal (open scenes, many
     // imported ones), two more slices among hundreds of obstacles would double the time.
     if (spinPlacesFound_ && sequenced() >= 2) addEndSlices(start, goal);
-    const bool slicesBehind = sequenced() * targetLines <= lines().size() * targetSlices;
-    if (sequenced() < targetSlices && (slicesBehind || lines().size() >= targetLines))
+    const bool slicesBehind = sequenced() * target.lines <= lines().size() * target.slices;
+    if (sequenced() < target.slices && (slicesBehind || lines().size() >= target.lines))
       addNextSlice();
     else
       sub.addLine(nextLinePoint());
@@ -305,9 +317,7 @@ OneRobotResult OneRobotPlanner::solveRounds(
       stats_.noPath = noPathAlone(scene_, checker_, 0, start, goal);
       if (!stats_.noPath.empty()) return false;
     }
-    slicesAtRoundStart = sequenced(), linesAtRoundStart = lines().size();
-    targetSlices *= 2;
-    targetLines *= 2;
+    target.doubleFrom(sequenced(), lines().size());
     return true;
   };
   RoundsOutcome o = runRounds(h, roadmap_, size_t(from), size_t(to), stop, stats_);

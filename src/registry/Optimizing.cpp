@@ -128,23 +128,28 @@ class Optimizing final : public Planner {
     if (total.gridRoutes > 0) r.stats.counts.emplace_back("optimize_grid_routes", total.gridRoutes);
   }
 
-  /// Robots moving at once where they can (path/Schedule.h), certified again: a refusal (a bug)
-  /// or the limit keeps the path as it was. Phase "schedule".
+  /// `w` in place of the path once the continuous checker certifies it. A last guard, and a path
+  /// along contacts takes it seconds: the limit holds, and a refusal (a bug) or the limit keeps
+  /// the path as it was.
+  void takeIfCertified(PlanResult& r, const CollisionChecker& checker, std::vector<Config> w,
+                       const Termination& stop) const {
+    const StopScope scope(stop);
+    try {
+      const PathCheckResult c = checkPath(scene_, checker, w);
+      if (c.ok) {
+        r.waypoints = std::move(w);
+        r.certificate = c;
+      }
+    } catch (const Stopped&) {
+    }
+  }
+
+  /// Robots moving at once where they can (path/Schedule.h), certified again. Phase "schedule".
   void moveAtOnce(PlanResult& r, const CollisionChecker& checker, const Termination& stop) const {
     Stopwatch watch;
     ScheduleStats s;
     std::vector<Config> w = concurrentSchedule(scene_, checker, r.waypoints, &s);
-    if (s.makespanAfter < s.makespanBefore) {
-      const StopScope scope(stop);
-      try {
-        const PathCheckResult c = checkPath(scene_, checker, w);
-        if (c.ok) {
-          r.waypoints = std::move(w);
-          r.certificate = c;
-        }
-      } catch (const Stopped&) {
-      }
-    }
+    if (s.makespanAfter < s.makespanBefore) takeIfCertified(r, checker, std::move(w), stop);
     r.stats.phases.emplace_back("schedule", watch.seconds());
     r.stats.counts.emplace_back("schedule_actions", s.actions);
     r.stats.counts.emplace_back("schedule_dependencies", s.dependencies);
@@ -162,19 +167,8 @@ class Optimizing final : public Planner {
     if (effort > 0 && r.stats.checks > 0)
       settings.roundsWork = std::max(kLeastRoundsWork, size_t(effort * double(r.stats.checks)));
     const OptimizeStats s = optimizePath(scene_, checker, rng, settings, stop, w);
-    if (s.accepted > 0) {
-      // Every change was certified; this is a last guard, and a path along contacts takes it
-      // seconds: the limit holds, and a refusal (a bug) or the limit keeps the planner's path.
-      const StopScope scope(stop);
-      try {
-        const PathCheckResult c = checkPath(scene_, checker, w);
-        if (c.ok) {
-          r.waypoints = std::move(w);
-          r.certificate = c;
-        }
-      } catch (const Stopped&) {
-      }
-    }
+    // Every change was certified; this is a last guard.
+    if (s.accepted > 0) takeIfCertified(r, checker, std::move(w), stop);
     stats.accepted += s.accepted;
     stats.evaluations += s.evaluations;
     stats.rounds += s.rounds;

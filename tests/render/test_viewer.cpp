@@ -425,14 +425,7 @@ TEST(View, ARecordsThreeDimensionalViewGrowsWithThePlanning) {
   const std::string html = recordPage(s, "mms", dir, record);
   ASSERT_NE(test::readFile(html).find("OrbitControls"), std::string::npos)
       << "libjs-three is not installed: scripts/setup.sh installs it";
-  auto page = [&](const std::string& hash) {
-    auto c = test::runCommand(
-        "chromium --headless --no-sandbox --disable-gpu "
-        "--virtual-time-budget=5000 --user-data-dir=" +
-        quote(dir.path("profile")) + " --dump-dom " + quote("file://" + html + "#" + hash));
-    EXPECT_EQ(c.code, 0) << c.err;
-    return c.out;
-  };
+  auto page = [&](const std::string& hash) { return pageDom(dir, html, hash); };
   auto attribute = [](const std::string& dom, const std::string& name) {
     const size_t at = dom.find(name + "=\"");
     return at == std::string::npos
