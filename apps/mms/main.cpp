@@ -16,7 +16,9 @@ int main(int argc, char** argv) {
       "mms: motion planning via manifold samples for planar polygonal robots.\n"
       "Scene and path formats: docs/formats.md. Exit codes: 0 success, 1 negative answer,\n"
       "2 bad input, 3 internal error."};
-  // Before the subcommands, which take the app's formatter when they are added.
+  // Before the subcommands, which take the app's formatter when they are added. Named, so that
+  // usage lines read "mms plan ...", not the path the program was started by.
+  app.name("mms");
   app.formatter(std::make_shared<HelpFormatter>(helpWidth()));
   app.set_version_flag("--version", std::string("mms ") + mms::version());
   app.require_subcommand(1);

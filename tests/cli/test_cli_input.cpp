@@ -319,6 +319,8 @@ TEST(CliInput, HelpIsWrappedGroupedAndReadsAsText) {
       const test::Outcome r = test::runCommand("COLUMNS=" + std::to_string(width) + " " +
                                                MMS_BINARY + " " + command + " --help");
       ASSERT_EQ(r.code, 0) << command;
+      // The program's name, not the path it was started by, however long that is.
+      EXPECT_NE(r.out.find("\nUsage: mms " + command), std::string::npos) << r.out;
       std::istringstream in(r.out);
       for (std::string line; std::getline(in, line);)
         EXPECT_LE(line.size(), width) << "mms " << command << " --help: " << line;
